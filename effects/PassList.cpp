@@ -1,0 +1,23 @@
+// The frame, in order. An effect adds its pass here, after what it reads.
+#include "effects/Renderer.h"
+#include "effects/scene/EnvironmentPass.h"
+#include "effects/scene/OpaquePass.h"
+#include "effects/scene/SceneCopyPass.h"
+#include "effects/scene/SeaPass.h"
+#include "effects/scene/ShadowPass.h"
+#include "effects/scene/TonemapPass.h"
+
+namespace effects {
+
+std::vector<std::unique_ptr<Pass>> make_pass_list() {
+    std::vector<std::unique_ptr<Pass>> passes;
+    passes.push_back(std::make_unique<EnvironmentPass>());
+    passes.push_back(std::make_unique<ShadowPass>());
+    passes.push_back(std::make_unique<OpaquePass>());
+    passes.push_back(std::make_unique<SceneCopyPass>());
+    passes.push_back(std::make_unique<SeaPass>());
+    passes.push_back(std::make_unique<TonemapPass>());
+    return passes;
+}
+
+}  // namespace effects

@@ -1,0 +1,46 @@
+#include "effects/Renderer.h"
+
+#include <glm/geometric.hpp>
+
+#include "effects/gl/DebugGroup.h"
+#include "sim/player/Player.h"
+
+namespace effects {
+
+Renderer::Renderer(const SceneDesc& scene, const sim::World& world, RendererOptions options)
+    : resources_{scene, SceneGeometry(scene, world.terrain()),
+                 SceneLighting(options.environment_size, options.shadow_map_size), SceneTargets{}},
+      passes_(make_pass_list()),
+      timer_(std::make_unique<gl::PassTimer>(options.timing)),
+      sun_dir_(glm::normalize(world.level().sun_direction)) {
+    for (auto& p : passes_) p->register_params(params_);
+}
+
+void Renderer::set_timing(gl::TimingMode mode) {
+    if (mode != timer_->mode()) timer_ = std::make_unique<gl::PassTimer>(mode);
+}
+
+void Renderer::render(const sim::World& world, RenderOutput output) {
+    if (output.width != resources_.targets.width() || output.height != resources_.targets.height()) {
+        resources_.targets.resize(output.width, output.height);
+        for (auto& p : passes_) p->resize(output.width, output.height);
+    }
+    // Rain brings cloud: the sun weakens and the sky greys.
+    float rain = world.get<sim::Player>().rain_intensity();
+    SkyState& sky = resources_.lighting.sky;
+    sky.sun_dir = sun_dir_;
+    sky.sun_radiance = glm::vec3(3.2f, 3.0f, 2.7f) * (1.0f - 0.75f * rain);
+    sky.sky_intensity = 1.0f - 0.45f * rain;
+
+    Camera camera = make_camera(world.get<sim::CameraRig>().view(), float(output.width) / float(output.height));
+    FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds};
+    timer_->frame_begin();
+    for (auto& pass : passes_) {
+        gl::DebugGroup group(pass->name());
+        auto timing = timer_->scope(pass->name());
+        pass->render(frame);
+    }
+    timer_->frame_end();
+}
+
+}  // namespace effects

@@ -1,0 +1,33 @@
+#pragma once
+#include "effects/scene/Camera.h"
+#include "effects/scene/SceneGeometry.h"
+#include "effects/scene/SceneLighting.h"
+#include "effects/scene/SceneTargets.h"
+#include "sim/world/World.h"
+
+namespace effects {
+
+// What the renderer shares between its passes for the life of a level.
+struct SceneResources {
+    const SceneDesc& desc;
+    SceneGeometry geometry;
+    SceneLighting lighting;
+    SceneTargets targets;
+};
+
+// Where the frame ends up: the window's framebuffer (0) or a capture target.
+struct RenderOutput {
+    GLuint framebuffer = 0;
+    int width = 0, height = 0;
+};
+
+// One frame: the world to draw (read only), from where, into what.
+struct FrameContext {
+    const sim::World& world;
+    const Camera& camera;
+    SceneResources& scene;
+    RenderOutput output;
+    double time_s = 0.0;  // sim time: frames of a replay are the same every run
+};
+
+}  // namespace effects

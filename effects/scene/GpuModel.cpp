@@ -1,0 +1,65 @@
+#include "effects/scene/GpuModel.h"
+
+#include <cmath>
+#include <cstddef>
+
+namespace effects {
+
+GpuModel::GpuModel(const Model& model) : name_(model.name) {
+    std::vector<MeshVertex> verts;
+    std::vector<uint32_t> idx;
+    for (const MeshData& m : model.meshes) {
+        uint32_t base = uint32_t(verts.size());
+        ranges_.push_back({GLsizei(m.indices.size()), idx.size(), m.roughness, m.metallic});
+        verts.insert(verts.end(), m.vertices.begin(), m.vertices.end());
+        for (uint32_t i : m.indices) idx.push_back(base + i);
+    }
+    vertices_ = gl::Buffer::create<MeshVertex>("model." + model.name + ".vertices", verts, 0);
+    indices_ = gl::Buffer::create<uint32_t>("model." + model.name + ".indices", idx, 0);
+    vao_ = gl::VertexArray::create("model." + model.name);
+    vao_.attribute(0, 0, 3, GL_FLOAT, offsetof(MeshVertex, position));
+    vao_.attribute(1, 0, 3, GL_FLOAT, offsetof(MeshVertex, normal));
+    vao_.attribute(2, 0, 4, GL_FLOAT, offsetof(MeshVertex, color));
+    vao_.vertex_buffer(0, vertices_, 0, sizeof(MeshVertex));
+    vao_.element_buffer(indices_);
+}
+
+void GpuModel::draw(const gl::Program& program, bool depth_only) const {
+    vao_.bind();
+    for (const Range& r : ranges_) {
+        if (!depth_only) {
+            program.set("u_roughness", r.roughness);
+            program.set("u_metallic", r.metallic);
+        }
+        glDrawElements(GL_TRIANGLES, r.index_count, GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(r.first_index * sizeof(uint32_t)));
+    }
+}
+
+Model make_sphere_model(int rings, int segments) {
+    Model model;
+    model.name = "sphere";
+    MeshData m;
+    m.name = "sphere";
+    m.roughness = 0.6f;
+    const float pi = 3.14159265f;
+    for (int r = 0; r <= rings; ++r) {
+        float theta = pi * float(r) / float(rings);
+        for (int s = 0; s <= segments; ++s) {
+            float phi = 2.0f * pi * float(s) / float(segments);
+            glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+            m.vertices.push_back({n, n, glm::vec4(1.0f)});
+        }
+    }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            uint32_t a = uint32_t(r * (segments + 1) + s), b = a + uint32_t(segments + 1);
+            m.indices.insert(m.indices.end(), {a, a + 1, b, b, a + 1, b + 1});
+        }
+    model.meshes.push_back(std::move(m));
+    model.bounds_min = glm::vec3(-1.0f);
+    model.bounds_max = glm::vec3(1.0f);
+    return model;
+}
+
+}  // namespace effects

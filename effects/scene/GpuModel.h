@@ -1,0 +1,35 @@
+#pragma once
+// A model uploaded to the GPU: one vertex and one index buffer, a draw range per mesh.
+#include <vector>
+
+#include "effects/gl/Buffer.h"
+#include "effects/gl/Program.h"
+#include "effects/gl/VertexArray.h"
+#include "effects/scene/SceneDesc.h"
+
+namespace effects {
+
+class GpuModel {
+public:
+    GpuModel(const Model& model);
+
+    // Draws every mesh, setting the material uniforms unless depth_only.
+    void draw(const gl::Program& program, bool depth_only) const;
+    const std::string& name() const { return name_; }
+
+private:
+    struct Range {
+        GLsizei index_count;
+        size_t first_index;
+        float roughness, metallic;
+    };
+    std::string name_;
+    gl::Buffer vertices_, indices_;
+    gl::VertexArray vao_;
+    std::vector<Range> ranges_;
+};
+
+// A unit sphere (radius 1) for thrown objects.
+Model make_sphere_model(int rings, int segments);
+
+}  // namespace effects

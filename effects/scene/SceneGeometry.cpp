@@ -1,0 +1,71 @@
+#include "effects/scene/SceneGeometry.h"
+
+#include <algorithm>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "effects/scene/TerrainMesh.h"
+#include "sim/objects/ThrownObjects.h"
+#include "sim/vehicle/Boat.h"
+#include "sim/vehicle/Car.h"
+
+namespace effects {
+
+namespace {
+constexpr int kMaxRoads = 16;  // size of u_roads in mesh.frag.glsl
+}
+
+SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
+    : desc_(desc),
+      level_(terrain.level()),
+      terrain_(make_terrain_model(terrain, 2.0f)),
+      sea_(make_sea_model(terrain.level().sea_level_m, 3000.0f)),
+      sphere_(make_sphere_model(12, 20)) {
+    for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
+}
+
+void SceneGeometry::apply_ground(const gl::Program& p) const {
+    int n = std::min<int>(int(level_.roads.size()), kMaxRoads);
+    p.set("u_road_count", n);
+    for (int i = 0; i < n; ++i) {
+        const sim::Rect& r = level_.roads[size_t(i)];
+        p.set("u_roads[" + std::to_string(i) + "]", glm::vec4(r.min.x, r.min.y, r.max.x, r.max.y));
+    }
+    p.set("u_shore_z", level_.shore_z_m);
+    p.set("u_sea_level", level_.sea_level_m);
+}
+
+void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool depth_only) const {
+    auto material = [&](int surface, glm::vec4 tint) {
+        if (depth_only) return;
+        p.set("u_surface", surface);
+        p.set("u_tint", tint);
+    };
+    material(1, glm::vec4(1.0f));
+    p.set("u_model", glm::mat4(1.0f));
+    terrain_.draw(p, depth_only);
+
+    material(0, glm::vec4(1.0f));
+    for (const PropInstance& inst : desc_.props) {
+        p.set("u_model", inst.transform);
+        models_[size_t(inst.model)]->draw(p, depth_only);
+    }
+    if (desc_.car_model >= 0) {
+        p.set("u_model", world.get<sim::Car>().pose().matrix());
+        models_[size_t(desc_.car_model)]->draw(p, depth_only);
+    }
+    if (desc_.boat_model >= 0) {
+        p.set("u_model", world.get<sim::Boat>().pose().matrix());
+        models_[size_t(desc_.boat_model)]->draw(p, depth_only);
+    }
+    for (const sim::ThrownObject& o : world.get<sim::ThrownObjects>().objects()) {
+        // Stones grey, floats bright orange so they read on the water.
+        material(0, o.sinks() ? glm::vec4(0.18f, 0.18f, 0.17f, 1.0f) : glm::vec4(0.9f, 0.28f, 0.04f, 1.0f));
+        glm::mat4 m = glm::translate(glm::mat4(1.0f), o.position) * glm::scale(glm::mat4(1.0f), glm::vec3(o.radius_m));
+        p.set("u_model", m);
+        sphere_.draw(p, depth_only);
+    }
+}
+
+}  // namespace effects

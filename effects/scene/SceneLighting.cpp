@@ -1,0 +1,34 @@
+#include "effects/scene/SceneLighting.h"
+
+namespace effects {
+
+SceneLighting::SceneLighting(int env_size, int shadow_size)
+    : env_levels_(gl::Texture::full_mip_levels(env_size, env_size)) {
+    env_cube = gl::Texture::create_cube("sky.environment", GL_RGBA16F, env_size, env_levels_);
+    env_cube.set_filter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    shadow_map = gl::Texture::create_2d("sun.shadow_map", GL_DEPTH_COMPONENT32F, shadow_size, shadow_size);
+    shadow_map.set_filter(GL_LINEAR, GL_LINEAR);
+    shadow_map.set_wrap(GL_CLAMP_TO_EDGE);
+    shadow_map.set_depth_compare(true, GL_LEQUAL);
+}
+
+void SceneLighting::apply_sky(const gl::Program& p) const {
+    p.set("u_sun_dir", sky.sun_dir);
+    p.set("u_sun_radiance", sky.sun_radiance);
+    p.set("u_sky_intensity", sky.sky_intensity);
+}
+
+void SceneLighting::apply(const gl::Program& p) const {
+    apply_sky(p);
+    // Texture coordinates in [0,1] and depth in [0,1] from clip space.
+    glm::mat4 bias(0.5f);
+    bias[3] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    p.set("u_shadow_matrix", bias * shadow_view_proj);
+    p.set("u_env_max_lod", env_max_lod());
+    p.set("u_env", int(kEnvUnit));
+    p.set("u_shadow_map", int(kShadowUnit));
+    env_cube.bind(kEnvUnit);
+    shadow_map.bind(kShadowUnit);
+}
+
+}  // namespace effects

@@ -1,0 +1,40 @@
+#include "effects/scene/SceneTargets.h"
+
+namespace effects {
+
+void SceneTargets::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = width;
+    height_ = height;
+    colour_ = gl::Texture::create_2d("scene.colour", GL_RGBA16F, width, height);
+    normal_ = gl::Texture::create_2d("scene.normal", GL_RGBA16F, width, height);
+    depth_ = gl::Texture::create_2d("scene.depth", GL_DEPTH_COMPONENT32F, width, height);
+    colour_copy_ = gl::Texture::create_2d("scene.colour_copy", GL_RGBA16F, width, height);
+    depth_copy_ = gl::Texture::create_2d("scene.depth_copy", GL_DEPTH_COMPONENT32F, width, height);
+    for (gl::Texture* t : {&colour_, &normal_, &depth_, &colour_copy_, &depth_copy_}) {
+        t->set_filter(GL_LINEAR, GL_LINEAR);
+        t->set_wrap(GL_CLAMP_TO_EDGE);
+    }
+    depth_copy_.set_filter(GL_NEAREST, GL_NEAREST);
+    scene_fbo_ = gl::Framebuffer::create("scene");
+    scene_fbo_.attach_colour(0, colour_);
+    scene_fbo_.attach_colour(1, normal_);
+    scene_fbo_.attach_depth(depth_);
+    scene_fbo_.set_draw_buffers({0, 1});
+    scene_fbo_.check_complete();
+    copy_fbo_ = gl::Framebuffer::create("scene.copy");
+    copy_fbo_.attach_colour(0, colour_copy_);
+    copy_fbo_.attach_depth(depth_copy_);
+    copy_fbo_.set_draw_buffers({0});
+    copy_fbo_.check_complete();
+}
+
+void SceneTargets::copy_scene() {
+    glNamedFramebufferReadBuffer(scene_fbo_.id(), GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(scene_fbo_.id(), copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitNamedFramebuffer(scene_fbo_.id(), copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
+                           GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+}
+
+}  // namespace effects

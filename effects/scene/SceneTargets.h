@@ -1,0 +1,31 @@
+#pragma once
+// The frame's shared render targets: HDR colour, world normals and depth that the
+// opaque passes write, and copies of colour and depth for the passes that refract
+// what lies behind them (sea, fluid tank, windshield).
+#include "effects/gl/Framebuffer.h"
+#include "effects/gl/Texture.h"
+
+namespace effects {
+
+class SceneTargets {
+public:
+    void resize(int width, int height);
+    // Copies colour and depth so that later passes can sample them while drawing.
+    void copy_scene();
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const gl::Framebuffer& scene() const { return scene_fbo_; }
+    const gl::Texture& colour() const { return colour_; }
+    const gl::Texture& normal() const { return normal_; }
+    const gl::Texture& depth() const { return depth_; }
+    const gl::Texture& colour_copy() const { return colour_copy_; }
+    const gl::Texture& depth_copy() const { return depth_copy_; }
+
+private:
+    int width_ = 0, height_ = 0;
+    gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_;
+    gl::Framebuffer scene_fbo_, copy_fbo_;
+};
+
+}  // namespace effects

@@ -1,0 +1,62 @@
+#include "effects/scene/TerrainMesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace effects {
+
+Model make_terrain_model(const sim::Terrain& terrain, float spacing_m) {
+    const sim::LevelDesc& level = terrain.level();
+    const float h = level.half_extent_m;
+    std::vector<float> xs, zs;
+    for (float x = -h; x <= h + 1e-3f; x += spacing_m) xs.push_back(x);
+    for (float z = -h; z <= h + 1e-3f; z += spacing_m) zs.push_back(z);
+    // Rows exactly on both edges of the quay.
+    for (float z : {level.shore_z_m, level.shore_z_m + 1.0f}) zs.push_back(z);
+    std::sort(zs.begin(), zs.end());
+    zs.erase(std::unique(zs.begin(), zs.end(), [](float a, float b) { return std::fabs(a - b) < 0.05f; }), zs.end());
+
+    MeshData m;
+    m.name = "terrain";
+    m.roughness = 0.9f;
+    const size_t nx = xs.size(), nz = zs.size();
+    m.vertices.reserve(nx * nz);
+    for (float z : zs)
+        for (float x : xs) {
+            float e = 0.25f;
+            float dx = terrain.ground_height({x + e, z}) - terrain.ground_height({x - e, z});
+            float dz = terrain.ground_height({x, z + e}) - terrain.ground_height({x, z - e});
+            glm::vec3 n = glm::normalize(glm::vec3(-dx / (2 * e), 1.0f, -dz / (2 * e)));
+            m.vertices.push_back({{x, terrain.ground_height({x, z}), z}, n, glm::vec4(1.0f)});
+        }
+    for (size_t j = 0; j + 1 < nz; ++j)
+        for (size_t i = 0; i + 1 < nx; ++i) {
+            uint32_t a = uint32_t(j * nx + i), b = a + 1, c = uint32_t(a + nx), d = c + 1;
+            m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
+        }
+    Model model;
+    model.name = "terrain";
+    model.bounds_min = {-h, level.seabed_m, -h};
+    model.bounds_max = {h, level.land_height_m + 20.0f, h};
+    model.meshes.push_back(std::move(m));
+    return model;
+}
+
+Model make_sea_model(float sea_level_m, float half_extent_m) {
+    MeshData m;
+    m.name = "sea";
+    float e = half_extent_m;
+    for (glm::vec2 p : {glm::vec2(-e, -e), glm::vec2(e, -e), glm::vec2(-e, e), glm::vec2(e, e)})
+        m.vertices.push_back({{p.x, sea_level_m, p.y}, {0, 1, 0}, glm::vec4(1.0f)});
+    m.indices = {0, 2, 1, 1, 2, 3};
+    Model model;
+    model.name = "sea";
+    model.meshes.push_back(std::move(m));
+    model.bounds_min = {-e, sea_level_m, -e};
+    model.bounds_max = {e, sea_level_m, e};
+    return model;
+}
+
+}  // namespace effects

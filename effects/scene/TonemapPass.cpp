@@ -1,0 +1,25 @@
+#include "effects/scene/TonemapPass.h"
+
+#include "effects/gl/EmptyVertexArray.h"
+
+namespace effects {
+
+TonemapPass::TonemapPass()
+    : program_(gl::Program::from_files("tonemap", {"common/fullscreen.vert.glsl", "scene/tonemap.frag.glsl"})) {}
+
+void TonemapPass::register_params(ParamRegistry& params) { params.add("tonemap", "exposure", &exposure_, 0.1f, 4.0f); }
+
+void TonemapPass::render(const FrameContext& frame) {
+    glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
+    glViewport(0, 0, frame.output.width, frame.output.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    program_.use();
+    program_.set("u_exposure", exposure_);
+    program_.set("u_hdr", 0);
+    frame.scene.targets.colour().bind(0);
+    gl::bind_empty_vertex_array();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace effects

@@ -1,0 +1,138 @@
+#include "game/capture/ImageFiles.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace game {
+namespace {
+
+// Built by appending: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
+std::string quoted(const std::filesystem::path& path) {
+    std::string text(1, '\'');
+    text += path.string();
+    text += '\'';
+    return text;
+}
+
+void check_image(const std::filesystem::path& path, const ImageRGBA8& image) {
+    if (image.width < 1 || image.height < 1 || image.width > kMaxImageSide ||
+        image.height > kMaxImageSide)
+        throw std::invalid_argument("cannot write " + quoted(path) + ": image size " +
+                                    std::to_string(image.width) + "x" +
+                                    std::to_string(image.height) + " outside 1.." +
+                                    std::to_string(kMaxImageSide));
+    const std::size_t expected = std::size_t(image.width) * std::size_t(image.height) * 4;
+    if (image.pixels.size() != expected)
+        throw std::invalid_argument("cannot write " + quoted(path) + ": " +
+                                    std::to_string(image.pixels.size()) + " bytes for a " +
+                                    std::to_string(image.width) + "x" +
+                                    std::to_string(image.height) + " RGBA8 image (needs " +
+                                    std::to_string(expected) + ")");
+}
+
+}  // namespace
+
+std::filesystem::path temporary_path_beside(const std::filesystem::path& path) {
+    static std::atomic<unsigned> counter{0};
+    std::filesystem::path temporary = path;
+    std::string name(1, '.');
+    name += path.filename().string();
+    name += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    temporary.replace_filename(name);
+    return temporary;
+}
+
+void replace_with(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        std::filesystem::remove(temporary, error);
+        throw std::runtime_error("cannot write " + quoted(path) + ": rename failed: " + error.message());
+    }
+}
+
+void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
+    check_image(path, image);
+    std::error_code error;
+    if (path.has_parent_path()) {
+        std::filesystem::create_directories(path.parent_path(), error);
+        if (error)
+            throw std::runtime_error("cannot write " + quoted(path) + ": cannot create directory " +
+                                     quoted(path.parent_path()) + ": " + error.message());
+    }
+
+    const std::filesystem::path temporary = temporary_path_beside(path);
+    auto fail = [&](const std::string& why) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw std::runtime_error("cannot write " + quoted(path) + ": " + why);
+    };
+
+    // "png" names the format: the temporary's name has no .png extension.
+    auto out = OIIO::ImageOutput::create("png");
+    if (!out) fail("OpenImageIO has no PNG writer: " + OIIO::geterror());
+    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+    // Our pixels are straight alpha: without this OIIO would un-premultiply them.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (!out->open(temporary.string(), spec)) fail(out->geterror());
+    if (!out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) {
+        const std::string why = out->geterror();
+        out->close();
+        fail(why);
+    }
+    if (!out->close()) fail(out->geterror());
+    out.reset();
+    replace_with(temporary, path);
+}
+
+ImageRGBA8 read_png(const std::filesystem::path& path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        throw std::runtime_error("cannot read image " + quoted(path) +
+                                 (std::filesystem::exists(path, error) ? ": not a regular file"
+                                                                       : ": no such file"));
+
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);  // keep straight alpha as stored
+    auto in = OIIO::ImageInput::open(path.string(), &config);
+    if (!in) throw std::runtime_error("cannot read image " + quoted(path) + ": " + OIIO::geterror());
+
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide ||
+        spec.height > kMaxImageSide || spec.depth > 1)
+        throw std::runtime_error("cannot read image " + quoted(path) + ": size " +
+                                 std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                                 " outside 1.." + std::to_string(kMaxImageSide));
+    if (spec.nchannels < 1 || spec.deep)
+        throw std::runtime_error("cannot read image " + quoted(path) + ": " +
+                                 std::to_string(spec.nchannels) + " channels" +
+                                 (spec.deep ? " (deep image)" : ""));
+
+    const int channels = std::min(spec.nchannels, 4);
+    const std::size_t pixel_count = std::size_t(spec.width) * std::size_t(spec.height);
+    std::vector<std::uint8_t> stored(pixel_count * std::size_t(channels));
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, stored.data()))
+        throw std::runtime_error("cannot read image " + quoted(path) + ": " + in->geterror());
+    in->close();
+
+    ImageRGBA8 image{spec.width, spec.height, std::vector<std::uint8_t>(pixel_count * 4)};
+    for (std::size_t i = 0; i < pixel_count; ++i) {
+        const std::uint8_t* s = &stored[i * std::size_t(channels)];
+        std::uint8_t* d = &image.pixels[i * 4];
+        const bool grey = channels <= 2;
+        d[0] = s[0];
+        d[1] = grey ? s[0] : s[1];
+        d[2] = grey ? s[0] : s[2];
+        d[3] = channels == 2 ? s[1] : channels == 4 ? s[3] : 255;
+    }
+    return image;
+}
+
+}  // namespace game

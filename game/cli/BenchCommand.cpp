@@ -1,0 +1,135 @@
+// spindrift bench [--json FILE] [--quick]
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "effects/Renderer.h"
+#include "game/bench/BenchReport.h"
+#include "game/bench/SubsystemTimer.h"
+#include "game/capture/FrameCapture.h"
+#include "game/cli/Args.h"
+#include "game/cli/Commands.h"
+#include "game/cli/ExitCode.h"
+#include "game/platform/HeadlessContext.h"
+#include "game/session/GameSession.h"
+
+namespace game {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// A busy, repeatable session: driving with turns, throws and shots.
+sim::TickInput bench_input(uint32_t tick) {
+    sim::TickInput in;
+    in.set(sim::Control::Throttle, (tick / 240) % 4 != 3);
+    in.set(sim::Control::Brake, (tick / 240) % 4 == 3);
+    in.set((tick / 150) % 2 ? sim::Control::SteerLeft : sim::Control::SteerRight, (tick % 150) < 60);
+    in.set(sim::Control::ThrowHeavy, tick % 90 == 10);
+    in.set(sim::Control::ThrowLight, tick % 90 == 55);
+    in.set(sim::Control::Fire, tick % 150 == 20);
+    return in;
+}
+
+double peak_resident_mib() {
+    std::ifstream status("/proc/self/status");
+    std::string key;
+    while (status >> key) {
+        if (key == "VmHWM:") {
+            double kib = 0;
+            status >> kib;
+            return kib / 1024.0;
+        }
+        std::getline(status, key);
+    }
+    return 0.0;
+}
+
+void bench_sim(BenchReport& report, uint32_t ticks) {
+    GameSession s = GameSession::open("harbour", 1);
+    SubsystemTimer timer(s.world->subsystems().size());
+    auto start = Clock::now();
+    for (uint32_t t = 0; t < ticks; ++t) s.world->step(bench_input(t), &timer);
+    double total = seconds_since(start);
+    std::vector<std::string> names = s.world->subsystem_names();
+    for (size_t i = 0; i < names.size(); ++i)
+        report.add({"sim", "step " + names[i] + " per tick", timer.total_seconds()[i] * 1e3 / ticks, "ms"});
+    report.add({"sim", "whole sim per tick (1 thread)", total * 1e3 / ticks, "ms", 8.0, false,
+                std::to_string(ticks) + " ticks of the harbour level"});
+}
+
+void bench_replay_check(BenchReport& report, uint32_t ticks) {
+    // What `replay --check --frames none` does per tick: step, then hash.
+    GameSession s = GameSession::open("harbour", 1);
+    auto start = Clock::now();
+    uint64_t sink = 0;
+    for (uint32_t t = 0; t < ticks; ++t) {
+        s.world->step(bench_input(t));
+        sink ^= s.world->hash().world;
+    }
+    double secs = seconds_since(start);
+    report.add({"replay", "check without rendering", (ticks / 60.0) / secs, "x realtime", 50.0, true,
+                "hash " + std::to_string(sink & 0xffff)});
+}
+
+void bench_render(BenchReport& report, int width, int height, int frames) {
+    GameSession s = GameSession::open("harbour", 1);
+    effects::Renderer renderer(s.level.scene, *s.world, {.timing = effects::gl::TimingMode::Profile});
+    FrameCapture capture(width, height);
+    std::map<std::string, double> pass_ms;
+    std::vector<std::string> order;
+    double frame_s = 0.0;
+    // Warm up once (shader compile, first-use allocations), then time frames spread
+    // over a drive so the view changes.
+    renderer.render(*s.world, capture.output());
+    glFinish();
+    uint32_t tick = 0;
+    for (int f = 0; f < frames; ++f) {
+        for (int k = 0; k < 40; ++k) s.world->step(bench_input(tick++));
+        auto start = Clock::now();
+        renderer.render(*s.world, capture.output());
+        glFinish();
+        frame_s += seconds_since(start);
+        for (const auto& p : renderer.pass_times()) {
+            if (!pass_ms.count(p.name)) order.push_back(p.name);
+            pass_ms[p.name] += p.ms;
+        }
+    }
+    std::string res = std::to_string(width) + "x" + std::to_string(height);
+    for (const std::string& name : order)
+        report.add({"render", "pass " + name + " @" + res, pass_ms[name] / frames, "ms"});
+    report.add({"render", "whole frame @" + res, frame_s * 1e3 / frames, "ms", std::nullopt, false,
+                "profile mode: glFinish around each pass"});
+}
+
+}  // namespace
+
+int bench_command(const std::vector<std::string>& argv) {
+    Args args(argv, {"--json"}, {"--quick"});
+    if (!args.positional().empty()) throw UsageError("bench takes no positional arguments");
+    const bool quick = args.flag("--quick");
+    BenchReport report;
+    std::cerr << "bench: sim\n";
+    bench_sim(report, quick ? 300 : 1800);
+    std::cerr << "bench: replay check\n";
+    bench_replay_check(report, quick ? 300 : 1800);
+
+    HeadlessContext context;
+    std::cerr << "bench: render (" << context.renderer() << ")\n";
+    bench_render(report, 640, 360, quick ? 3 : 8);
+    bench_render(report, 1280, 720, quick ? 3 : 8);
+    report.add({"memory", "peak resident after 1280x720 frames", peak_resident_mib(), "MiB", 1024.0});
+
+    report.print_table();
+    if (auto path = args.value("--json")) {
+        report.write_json(*path, context.renderer());
+        std::cout << "wrote " << *path << "\n";
+    }
+    return kExitOk;
+}
+
+}  // namespace game

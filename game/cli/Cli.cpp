@@ -1,0 +1,121 @@
+#include "game/cli/Cli.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "game/capture/CaptureError.h"
+#include "game/cli/Args.h"
+#include "game/cli/Commands.h"
+#include "game/cli/ExitCode.h"
+#include "game/level/LevelError.h"
+#include "game/replay/InputScript.h"
+#include "game/replay/ReplayError.h"
+
+namespace game {
+
+namespace {
+
+constexpr const char* kHelp = R"(spindrift: a car-and-boat harbour game driving five real-time water and weather effects.
+
+usage: spindrift <command> [options]
+
+commands:
+  play   [--level NAME|PATH] [--record FILE] [--threads N]
+         Drive the car, take the boat, throw, fire, in a window. With no display,
+         renders the bundled demo replay headless instead and says where the frames went.
+  record --level NAME|PATH --script FILE --out FILE [--threads N]
+         Record a replay headless from an input script (see replays/*.script).
+  replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
+              [--update-goldens] [--strict] [--threads N] [--level NAME|PATH]
+         Play a replay in a window, or headless. --check verifies every stored hash and
+         compares the checkpoint frames with the goldens beside the replay
+         (replays/NAME/tick_NNNNNN.png); failures write the actual frame and a
+         difference image to --out (default spindrift-out/NAME). --frames picks the
+         ticks to render (default: the checkpoints). --out writes the frames as PNG,
+         --exr also as EXR (half-float HDR colour, depth, normals). --strict refuses a
+         replay that was cut short. --update-goldens rewrites the goldens.
+  bench  [--json FILE] [--quick]
+         Time the sim per subsystem, the replay check and each render pass at 1280x720
+         and 640x360; prints a table and writes JSON.
+
+options:
+  --level    a level name from levels/ (e.g. harbour) or a path to a level .json
+  --threads  sim worker threads (1..64); results are identical for any count
+  --help, --version
+
+keys (play): W/Up throttle, S/Down brake/reverse, A/D or Left/Right steer, E switch car/boat
+  (near the pier), 1 throw heavy, 2 throw light, Space fire, C camera (chase/driver),
+  V wipers, R/F rain up/down, P pause, F12 screenshot, F1 debug panel, Esc quit.
+
+exit codes:
+  0 success   1 a hash or frame check failed   2 bad command line
+  3 bad input (replay, level, script, image)   4 platform (no GL context, shader, display)
+  5 an output file could not be written
+
+environment: SPINDRIFT_DATA sets the folder holding levels/ and replays/.
+)";
+
+}  // namespace
+
+bool display_available() {
+    const char* x = std::getenv("DISPLAY");
+    const char* w = std::getenv("WAYLAND_DISPLAY");
+    return (x && *x) || (w && *w);
+}
+
+int run_cli(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty()) {
+        std::cerr << kHelp;
+        return kExitUsage;
+    }
+    const std::string command = args[0];
+    std::vector<std::string> rest(args.begin() + 1, args.end());
+    try {
+        if (command == "--help" || command == "-h" || command == "help") {
+            std::cout << kHelp;
+            return kExitOk;
+        }
+        if (command == "--version") {
+            std::cout << "spindrift " << SPINDRIFT_VERSION << "\n";
+            return kExitOk;
+        }
+        for (const std::string& a : rest)
+            if (a == "--help" || a == "-h") {
+                std::cout << kHelp;
+                return kExitOk;
+            }
+        if (command == "play") return play_command(rest);
+        if (command == "record") return record_command(rest);
+        if (command == "replay") return replay_command(rest);
+        if (command == "bench") return bench_command(rest);
+        throw UsageError("unknown command '" + command + "'");
+    } catch (const UsageError& e) {
+        std::cerr << "error: " << e.what() << "\n(spindrift --help lists the commands and options)\n";
+        return kExitUsage;
+    } catch (const ReplayError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const LevelError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const ScriptError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const CaptureError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitIo;
+    } catch (const std::filesystem::filesystem_error& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitIo;
+    } catch (const std::exception& e) {
+        // GL and platform failures: context creation, shader compilation.
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitPlatform;
+    }
+}
+
+}  // namespace game

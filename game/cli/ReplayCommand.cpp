@@ -1,0 +1,165 @@
+// spindrift replay FILE [--headless] [--check] [--frames LIST] [--out DIR] [--exr]
+//                      [--update-goldens] [--strict] [--threads N] [--level NAME|PATH]
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "effects/Renderer.h"
+#include "game/capture/FrameCapture.h"
+#include "game/capture/FrameCompare.h"
+#include "game/capture/ImageFiles.h"
+#include "game/cli/Args.h"
+#include "game/cli/Commands.h"
+#include "game/cli/ExitCode.h"
+#include "game/cli/Progress.h"
+#include "game/platform/HeadlessContext.h"
+#include "game/play/PlayMode.h"
+#include "game/replay/FrameSelection.h"
+#include "game/replay/ReplayCheck.h"
+#include "game/session/GameSession.h"
+
+namespace game {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string frame_name(uint32_t tick, const char* suffix) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "tick_%06u%s", tick, suffix);
+    return buf;
+}
+
+// A golden that is black or one flat colour tests nothing.
+std::optional<std::string> flat_frame_problem(const ImageRGBA8& image) {
+    ImageStats s = image_stats(image);
+    if (s.mean_luma < 0.02) return "the frame is black (mean luma " + std::to_string(s.mean_luma) + ")";
+    if (s.luma_stddev < 0.01) return "the frame is flat (luma deviation " + std::to_string(s.luma_stddev) + ")";
+    return std::nullopt;
+}
+
+struct FrameOutcome {
+    bool ok = true;
+    std::string line;
+};
+
+}  // namespace
+
+int replay_command(const std::vector<std::string>& argv) {
+    Args args(argv, {"--frames", "--out", "--threads", "--level"},
+              {"--headless", "--check", "--update-goldens", "--strict", "--exr"});
+    if (args.positional().size() != 1) throw UsageError("replay takes one replay file");
+    const fs::path path = args.positional()[0];
+    const bool check = args.flag("--check");
+    const bool update = args.flag("--update-goldens");
+    const int threads = args.integer("--threads", 1, 1, 64);
+    FrameSelection frames = args.value("--frames") ? FrameSelection::parse(*args.value("--frames")) : FrameSelection{};
+
+    Replay replay = read_replay(path, ReadOptions{args.flag("--strict")});
+    if (!replay.complete) std::cerr << path.string() << ": " << replay.cut_note << "\n";
+    const ReplayHeader& header = replay.header;
+    GameSession session = GameSession::open(args.value("--level").value_or(header.level_id), threads, header.seed);
+    if (auto why = replay_mismatch(replay, *session.world, session.level.content_hash)) {
+        std::cerr << "error: cannot replay " << path.string() << ": " << *why << "\n";
+        return kExitBadInput;
+    }
+    const uint32_t total = uint32_t(replay.inputs.size());
+    for (uint32_t t : frames.ticks)
+        if (t > total)
+            throw UsageError("--frames names tick " + std::to_string(t) + ", past the replay's end (" +
+                             std::to_string(total) + " ticks)");
+
+    if (!args.flag("--headless")) {
+        if (display_available()) return play_replay_in_window(replay, session);
+        std::cerr << "no display: replaying headless\n";
+    }
+
+    const std::set<uint32_t> checkpoints(header.checkpoints.begin(), header.checkpoints.end());
+    bool any_frames = frames.kind == FrameSelection::Kind::All || frames.kind == FrameSelection::Kind::List ||
+                      (frames.kind == FrameSelection::Kind::Checkpoints && !checkpoints.empty());
+    const fs::path golden_dir = path.parent_path() / path.stem();
+    const fs::path out_dir = args.value("--out") ? fs::path(*args.value("--out")) : fs::path("spindrift-out") / path.stem();
+
+    std::unique_ptr<HeadlessContext> context;
+    std::unique_ptr<effects::Renderer> renderer;
+    std::unique_ptr<FrameCapture> capture;
+    if (any_frames) {
+        context = std::make_unique<HeadlessContext>();
+        renderer = std::make_unique<effects::Renderer>(session.level.scene, *session.world);
+        capture = std::make_unique<FrameCapture>(int(header.frame_width), int(header.frame_height));
+    }
+
+    ReplayChecker checker(replay);
+    std::vector<FrameOutcome> outcomes;
+    size_t frames_written = 0;
+    std::optional<Divergence> divergence;
+    Progress progress("replay " + path.filename().string(), total, "ticks");
+    sim::World& world = *session.world;
+    for (uint32_t i = 0; i < total; ++i) {
+        world.step(replay.inputs[i]);
+        const uint32_t tick = uint32_t(world.tick());
+        if (check && (divergence = checker.after_step(world))) break;
+        progress.update(tick);
+        if (!frames.wants(tick, checkpoints)) continue;
+
+        renderer->render(world, capture->output());
+        ImageRGBA8 image = capture->read();
+        if (args.value("--out")) {
+            write_png(out_dir / frame_name(tick, ".png"), image);
+            if (args.flag("--exr")) FrameCapture::write_scene_exr(out_dir / frame_name(tick, ".exr"), renderer->targets(), 0.1f, 4000.0f);
+            ++frames_written;
+        }
+        if (!checkpoints.count(tick) || !(check || update)) continue;
+        const fs::path golden = golden_dir / frame_name(tick, ".png");
+        if (update) {
+            if (auto why = flat_frame_problem(image)) {
+                outcomes.push_back({false, "tick " + std::to_string(tick) + ": not storing a golden: " + *why});
+                continue;
+            }
+            write_png(golden, image);
+            outcomes.push_back({true, "tick " + std::to_string(tick) + ": golden written to " + golden.string()});
+            continue;
+        }
+        if (!fs::exists(golden)) {
+            outcomes.push_back({false, "tick " + std::to_string(tick) + ": no golden " + golden.string() +
+                                           " (make it with --update-goldens)"});
+            continue;
+        }
+        ImageRGBA8 want = read_png(golden);
+        CompareResult r = compare_frames(image, want);
+        std::optional<std::string> flat = flat_frame_problem(want);
+        if (r.passed && !flat) {
+            outcomes.push_back({true, "tick " + std::to_string(tick) + ": ok (" + r.summary + ")"});
+            continue;
+        }
+        fs::path actual = out_dir / frame_name(tick, ".actual.png"), diff = out_dir / frame_name(tick, ".diff.png");
+        write_png(actual, image);
+        write_png(diff, difference_image(image, want));
+        outcomes.push_back({false, "tick " + std::to_string(tick) + ": FAILED: " + (flat ? "golden: " + *flat : r.summary) +
+                                       "; actual " + actual.string() + ", difference " + diff.string()});
+    }
+    progress.finish();
+
+    bool ok = !divergence;
+    std::cout << path.string() << ": " << total << " ticks";
+    if (check) std::cout << ", " << checker.hashes_checked() << " hash checks";
+    std::cout << "\n";
+    for (const FrameOutcome& o : outcomes) {
+        std::cout << "  " << o.line << "\n";
+        ok = ok && o.ok;
+    }
+    if (frames_written) std::cout << "  " << frames_written << " frames written to " << out_dir.string() << "\n";
+    if (divergence) {
+        std::cout << "DESYNC at " << divergence->message << "\n";
+        return kExitCheckFailed;
+    }
+    if (!ok) {
+        std::cout << "FAILED\n";
+        return update ? kExitIo : kExitCheckFailed;
+    }
+    std::cout << (check ? "check passed" : "done") << (replay.complete ? "" : " (on the replay's complete prefix)") << "\n";
+    return kExitOk;
+}
+
+}  // namespace game

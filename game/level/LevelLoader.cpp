@@ -1,0 +1,345 @@
+#include "game/level/LevelLoader.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <initializer_list>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "game/DataPaths.h"
+#include "game/level/GltfModel.h"
+#include "sim/core/Hash.h"
+
+namespace game {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr size_t kMaxHills = 256;
+constexpr size_t kMaxRoads = 1024;
+constexpr float kMaxAbsCoordinate_m = 1000.0f;
+
+bool looks_like_path(std::string_view s) {
+    return s.find('/') != std::string_view::npos || (s.size() >= 5 && s.substr(s.size() - 5) == ".json");
+}
+
+std::string key_path(const std::string& where, std::string_view key) {
+    return where.empty() ? std::string(key) : where + "." + std::string(key);
+}
+std::string index_path(const std::string& where, size_t i) { return where + "[" + std::to_string(i) + "]"; }
+
+std::string show(float v) {
+    char buf[32];
+    auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+enum class Collision { none, solid, deck };
+
+struct Placement {  // a car, boat or prop entry, read but not yet loaded
+    std::string where;  // JSON path of the entry, for messages
+    std::string asset;
+    glm::vec3 position{0.0f};
+    float heading_rad = 0.0f;
+    float scale = 1.0f;
+    Collision collision = Collision::none;
+};
+
+// Typed access to the level JSON; every error names the file and the JSON path.
+class LevelReader {
+public:
+    explicit LevelReader(const fs::path& file) : file_(file) {}
+
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw LevelError(file_.string() + ": " + (where.empty() ? "" : where + ": ") + what);
+    }
+
+    // `v` must be an object whose keys are all in `known` (or start with '_').
+    void object(const json& v, const std::string& where, std::initializer_list<std::string_view> known) const {
+        if (!v.is_object()) fail(where, "expected an object");
+        for (auto it = v.begin(); it != v.end(); ++it) {
+            const std::string& k = it.key();
+            if (!k.empty() && k[0] == '_') continue;
+            if (std::find(known.begin(), known.end(), k) == known.end()) fail(key_path(where, k), "unknown key");
+        }
+    }
+    const json& required(const json& obj, const std::string& where, const char* key) const {
+        auto it = obj.find(key);
+        if (it == obj.end()) fail(where, std::string("missing required key '") + key + "'");
+        return *it;
+    }
+    static const json* optional(const json& obj, const char* key) {
+        auto it = obj.find(key);
+        return it == obj.end() ? nullptr : &*it;
+    }
+    const json& array(const json& v, const std::string& where, size_t max_size) const {
+        if (!v.is_array()) fail(where, "expected an array");
+        if (v.size() > max_size)
+            fail(where, std::to_string(v.size()) + " entries, at most " + std::to_string(max_size) + " allowed");
+        return v;
+    }
+    float number(const json& v, const std::string& where) const {
+        if (!v.is_number()) fail(where, "expected a number");
+        double d = v.get<double>();
+        if (!std::isfinite(d) || !std::isfinite(float(d))) fail(where, "is not a finite number");
+        return float(d);
+    }
+    // In [lo, hi], or (lo, hi] when lo_open.
+    float number_in(const json& v, const std::string& where, float lo, float hi, bool lo_open = false) const {
+        float f = number(v, where);
+        if (f > hi || f < lo || (lo_open && f == lo))
+            fail(where, show(f) + " is out of range " + (lo_open ? "(" : "[") + show(lo) + ", " + show(hi) + "]");
+        return f;
+    }
+    template <int N>
+    glm::vec<N, float> vec(const json& v, const std::string& where) const {
+        const char* expected = N == 2 ? "expected an array of 2 numbers" : "expected an array of 3 numbers";
+        if (!v.is_array() || v.size() != size_t(N)) fail(where, expected);
+        glm::vec<N, float> out;
+        for (int i = 0; i < N; ++i) {
+            if (!v[size_t(i)].is_number()) fail(where, expected);
+            out[i] = number_in(v[size_t(i)], index_path(where, size_t(i)), -kMaxAbsCoordinate_m, kMaxAbsCoordinate_m);
+        }
+        return out;
+    }
+    std::string string(const json& v, const std::string& where) const {
+        if (!v.is_string()) fail(where, "expected a string");
+        return v.get<std::string>();
+    }
+
+private:
+    const fs::path& file_;
+};
+
+class LevelParser {
+public:
+    LevelParser(const fs::path& file, const json& doc) : r_(file), doc_(doc) {}
+
+    // Everything in the JSON, checked; assets are only named here, not loaded.
+    void parse(sim::LevelDesc& level, std::vector<Placement>& placements) {
+        r_.object(doc_, "", {"format", "id", "seed", "world", "roads", "sun", "rain", "car", "boat", "tank_spot", "props"});
+        const json& format = r_.required(doc_, "", "format");
+        if (!format.is_number_unsigned() || format.get<uint64_t>() != 1)
+            r_.fail("format", "unsupported format " + format.dump() + " (this build reads format 1)");
+        level.id = r_.string(r_.required(doc_, "", "id"), "id");
+        if (level.id.empty() || level.id.size() > 64) r_.fail("id", "must have 1 to 64 characters");
+        if (const json* seed = LevelReader::optional(doc_, "seed")) {
+            if (!seed->is_number_unsigned()) r_.fail("seed", "expected a non-negative integer");
+            level.seed = seed->get<uint64_t>();
+        }
+        world(r_.required(doc_, "", "world"), level);
+        if (const json* roads = LevelReader::optional(doc_, "roads")) {
+            r_.array(*roads, "roads", kMaxRoads);
+            for (size_t i = 0; i < roads->size(); ++i) level.roads.push_back(road((*roads)[i], index_path("roads", i)));
+        }
+        if (const json* sun = LevelReader::optional(doc_, "sun")) {
+            r_.object(*sun, "sun", {"direction"});
+            glm::vec3 d = r_.vec<3>(r_.required(*sun, "sun", "direction"), "sun.direction");
+            if (!(d.y > 0.0f)) r_.fail("sun.direction", "must point upwards (y > 0)");
+            level.sun_direction = glm::normalize(d);
+        }
+        if (const json* rain = LevelReader::optional(doc_, "rain")) {
+            r_.object(*rain, "rain", {"intensity"});
+            level.rain_intensity = r_.number_in(r_.required(*rain, "rain", "intensity"), "rain.intensity", 0.0f, 1.0f);
+        }
+        placements.push_back(placement(r_.required(doc_, "", "car"), "car", false));
+        placements.push_back(placement(r_.required(doc_, "", "boat"), "boat", false));
+        level.car_spawn = {placements[0].position, placements[0].heading_rad};
+        level.boat_spawn = {placements[1].position, placements[1].heading_rad};
+        level.tank_spot = position(r_.required(doc_, "", "tank_spot"), "tank_spot");
+        if (const json* props = LevelReader::optional(doc_, "props")) {
+            r_.array(*props, "props", kMaxLevelProps);
+            for (size_t i = 0; i < props->size(); ++i)
+                placements.push_back(placement((*props)[i], index_path("props", i), true));
+        }
+    }
+
+private:
+    void world(const json& w, sim::LevelDesc& level) {
+        r_.object(w, "world", {"half_extent_m", "land_height_m", "shore_z_m", "sea_level_m", "seabed_m", "hills"});
+        auto num = [&](const char* key, float lo, float hi, bool lo_open = false) {
+            return r_.number_in(r_.required(w, "world", key), key_path("world", key), lo, hi, lo_open);
+        };
+        level.half_extent_m = half_extent_ = num("half_extent_m", 0.0f, 2000.0f, true);
+        level.land_height_m = num("land_height_m", -kMaxAbsCoordinate_m, kMaxAbsCoordinate_m);
+        level.shore_z_m = num("shore_z_m", -half_extent_, half_extent_);
+        level.sea_level_m = num("sea_level_m", -kMaxAbsCoordinate_m, kMaxAbsCoordinate_m);
+        level.seabed_m = num("seabed_m", -kMaxAbsCoordinate_m, kMaxAbsCoordinate_m);
+        if (!(level.seabed_m < level.sea_level_m)) r_.fail("world.seabed_m", "must be below sea_level_m");
+        if (const json* hills = LevelReader::optional(w, "hills")) {
+            r_.array(*hills, "world.hills", kMaxHills);
+            for (size_t i = 0; i < hills->size(); ++i) {
+                std::string where = index_path("world.hills", i);
+                const json& h = (*hills)[i];
+                r_.object(h, where, {"centre_xz", "radius_m", "height_m"});
+                sim::Hill hill;
+                hill.centre_xz = r_.vec<2>(r_.required(h, where, "centre_xz"), where + ".centre_xz");
+                hill.radius_m = r_.number_in(r_.required(h, where, "radius_m"), where + ".radius_m", 0.0f, 2000.0f, true);
+                hill.height_m = r_.number_in(r_.required(h, where, "height_m"), where + ".height_m", -kMaxAbsCoordinate_m,
+                                             kMaxAbsCoordinate_m);
+                level.hills.push_back(hill);
+            }
+        }
+    }
+
+    sim::Rect road(const json& v, const std::string& where) {
+        r_.object(v, where, {"min_xz", "max_xz"});
+        sim::Rect rect;
+        rect.min = r_.vec<2>(r_.required(v, where, "min_xz"), where + ".min_xz");
+        rect.max = r_.vec<2>(r_.required(v, where, "max_xz"), where + ".max_xz");
+        if (!(rect.min.x < rect.max.x && rect.min.y < rect.max.y))
+            r_.fail(where + ".max_xz", "must be greater than min_xz in x and z");
+        return rect;
+    }
+
+    glm::vec3 position(const json& v, const std::string& where) {
+        glm::vec3 p = r_.vec<3>(v, where);
+        if (std::fabs(p.x) > half_extent_ || std::fabs(p.z) > half_extent_)
+            r_.fail(where, "lies outside the world (half_extent_m " + show(half_extent_) + ")");
+        return p;
+    }
+
+    Placement placement(const json& v, const std::string& where, bool is_prop) {
+        if (is_prop) r_.object(v, where, {"asset", "position", "heading_deg", "scale", "collision"});
+        else r_.object(v, where, {"asset", "position", "heading_deg"});
+        Placement p;
+        p.where = where;
+        p.asset = r_.string(r_.required(v, where, "asset"), where + ".asset");
+        fs::path asset(p.asset);
+        bool escapes = std::any_of(asset.begin(), asset.end(), [](const fs::path& part) { return part == ".."; });
+        if (p.asset.empty() || asset.is_absolute() || escapes)
+            r_.fail(where + ".asset", "'" + p.asset + "' must be a relative path inside the level's folder, without '..'");
+        if (asset.extension() != ".gltf" && asset.extension() != ".glb")
+            r_.fail(where + ".asset", "'" + p.asset + "' must be a .gltf or .glb file");
+        p.position = position(r_.required(v, where, "position"), where + ".position");
+        if (const json* h = LevelReader::optional(v, "heading_deg"))
+            p.heading_rad = glm::radians(r_.number_in(*h, where + ".heading_deg", -720.0f, 720.0f));
+        if (!is_prop) return p;
+        if (const json* s = LevelReader::optional(v, "scale"))
+            p.scale = r_.number_in(*s, where + ".scale", 0.0f, 1000.0f, true);
+        if (const json* c = LevelReader::optional(v, "collision")) {
+            std::string mode = r_.string(*c, where + ".collision");
+            if (mode == "solid") p.collision = Collision::solid;
+            else if (mode == "deck") p.collision = Collision::deck;
+            else if (mode != "none") r_.fail(where + ".collision", "'" + mode + "' is not one of solid, deck, none");
+        }
+        return p;
+    }
+
+    LevelReader r_;
+    const json& doc_;
+    float half_extent_ = 0.0f;
+};
+
+bool name_starts_with(const std::string& name, std::string_view prefix) {
+    return name.compare(0, prefix.size(), prefix) == 0;
+}
+
+// World-space box of one mesh under a prop transform (from every vertex, so a turned
+// prop gets a tight box).
+sim::Aabb world_box(const effects::MeshData& mesh, const glm::mat4& transform) {
+    sim::Aabb box;
+    bool first = true;
+    for (const effects::MeshVertex& v : mesh.vertices) {
+        glm::vec3 p(transform * glm::vec4(v.position, 1.0f));
+        box.min = first ? p : glm::min(box.min, p);
+        box.max = first ? p : glm::max(box.max, p);
+        first = false;
+    }
+    return box;
+}
+
+}  // namespace
+
+fs::path resolve_level_path(std::string_view name_or_path) {
+    if (name_or_path.empty()) throw LevelError("empty level name");
+    if (looks_like_path(name_or_path)) return fs::path(name_or_path);
+    return data_dir() / "levels" / (std::string(name_or_path) + ".json");
+}
+
+LoadedLevel load_level(std::string_view name_or_path) {
+    LoadedLevel out;
+    out.path = resolve_level_path(name_or_path);
+    std::error_code ec;
+    if (!fs::exists(out.path, ec)) {
+        if (looks_like_path(name_or_path)) throw LevelError(out.path.string() + ": level file not found");
+        throw LevelError("no level named '" + std::string(name_or_path) + "' (looked for " + out.path.string() + ")");
+    }
+    std::string text = read_level_file(out.path, kMaxLevelJsonBytes);
+    json doc;
+    try {
+        doc = json::parse(text);
+    } catch (const json::exception& e) {
+        throw LevelError(out.path.string() + ": invalid JSON: " + e.what());
+    }
+
+    std::vector<Placement> placements;  // car, boat, then props
+    LevelParser(out.path, doc).parse(out.sim, placements);
+    LevelReader r(out.path);
+
+    sim::Hasher content;
+    content.u64(text.size());
+    content.bytes(text.data(), text.size());
+
+    // Each distinct asset once, in first-use order: that order is also the hash order.
+    fs::path asset_dir = out.path.parent_path() / out.path.stem();
+    std::map<std::string, int> model_of_asset;
+    for (const Placement& p : placements) {
+        std::string key = fs::path(p.asset).lexically_normal().generic_string();
+        if (model_of_asset.count(key)) continue;
+        fs::path file = asset_dir / key;
+        if (!fs::is_regular_file(file, ec))
+            r.fail(p.where + ".asset", p.asset + " not found (looked in " + asset_dir.string() + ")");
+        content.u64(key.size());
+        content.bytes(key.data(), key.size());
+        try {
+            out.scene.models.push_back(load_gltf_model(file, &content));
+        } catch (const LevelError& e) {
+            r.fail(p.where + ".asset", e.what());
+        }
+        model_of_asset[key] = int(out.scene.models.size()) - 1;
+    }
+    out.content_hash = content.value();
+
+    for (size_t i = 0; i < placements.size(); ++i) {
+        const Placement& p = placements[i];
+        int model = model_of_asset.at(fs::path(p.asset).lexically_normal().generic_string());
+        if (i == 0) out.scene.car_model = model;
+        if (i == 1) out.scene.boat_model = model;
+        if (i < 2) continue;  // vehicles are drawn at their sim pose
+
+        glm::mat4 transform = glm::translate(glm::mat4(1.0f), p.position) *
+                              glm::rotate(glm::mat4(1.0f), p.heading_rad, glm::vec3(0.0f, 1.0f, 0.0f)) *
+                              glm::scale(glm::mat4(1.0f), glm::vec3(p.scale));
+        out.scene.props.push_back({model, transform});
+
+        bool have_deck = false;
+        sim::Aabb deck;
+        for (const effects::MeshData& mesh : out.scene.models[size_t(model)].meshes) {
+            if (p.collision == Collision::none || name_starts_with(mesh.name, "nocollide")) continue;
+            sim::Aabb box = world_box(mesh, transform);
+            if (p.collision == Collision::solid || name_starts_with(mesh.name, "piling")) {
+                out.sim.solids.push_back(box);
+            } else {
+                deck.min = have_deck ? glm::min(deck.min, box.min) : box.min;
+                deck.max = have_deck ? glm::max(deck.max, box.max) : box.max;
+                have_deck = true;
+            }
+        }
+        if (p.collision == Collision::deck) {
+            if (!have_deck) r.fail(p.where + ".collision", "'deck' but " + p.asset + " has no meshes besides piling*/nocollide*");
+            out.sim.decks.push_back(deck);
+        }
+    }
+    return out;
+}
+
+}  // namespace game

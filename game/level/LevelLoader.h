@@ -1,0 +1,76 @@
+#pragma once
+// Level loading: a level JSON plus its glTF assets -> what the sim and the renderer need.
+//
+// Level file format (format 1). Units: metres, degrees; x east, y up, z south.
+//
+//   {
+//     "format": 1,                       required, must be 1
+//     "id": "harbour",                   required, 1..64 characters
+//     "seed": 20261122,                  optional unsigned integer (default 1)
+//     "world": {                         required
+//       "half_extent_m": 160,            the world is [-h, h] in x and z; (0, 2000]
+//       "land_height_m": 1.2,            land where z < shore_z_m
+//       "shore_z_m": 0, "sea_level_m": 0,
+//       "seabed_m": -6,                  below sea_level_m
+//       "hills": [{"centre_xz": [0, -80], "radius_m": 25, "height_m": 8}]   optional;
+//     },                                   radius_m (Gaussian sigma) in (0, 2000]
+//     "roads": [{"min_xz": [-150, -14], "max_xz": [150, -6]}],   optional, min < max
+//     "sun": {"direction": [0.45, 0.7, 0.35]},   optional; towards the sun, y > 0,
+//                                                  normalised by the loader
+//     "rain": {"intensity": 0.0},        optional, [0, 1]
+//     "car":  {"asset": "car.gltf",  "position": [x, y, z], "heading_deg": 0},    required
+//     "boat": {"asset": "boat.gltf", "position": [x, y, z], "heading_deg": -90},  required
+//     "tank_spot": [22, 1.5, 36],        required: where the fluid tank stands
+//     "props": [                         optional, at most 4096
+//       {"asset": "warehouse.gltf", "position": [x, y, z],
+//        "heading_deg": 0,               optional (default 0)
+//        "scale": 1,                     optional (default 1), (0, 1000]
+//        "collision": "solid"}           optional: "solid" | "deck" | "none" (default)
+//     ]
+//   }
+//
+// Positions must lie inside the world in x and z. Keys starting with '_' are ignored
+// (comments); any other unknown key is an error, so typos do not pass silently.
+//
+// Assets are paths relative to the folder named like the level file next to it
+// (levels/harbour.json -> levels/harbour/), without "..". Each distinct asset is
+// loaded once; props sharing it share one effects::Model.
+//
+// heading_deg turns about +y: 0 faces +x, positive turns from +x towards -z. A prop's
+// transform is translate(position) * rotate_y(heading) * scale.
+//
+// Collision: "solid" makes each of the model's meshes' world AABB a sim solid, except
+// meshes named "nocollide*" (so a hollow warehouse is one solid per wall); "deck" makes
+// the meshes named "piling*" solids and the world AABB of the other meshes (again
+// without "nocollide*") a drivable deck; "none" adds nothing.
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+
+#include "effects/scene/SceneDesc.h"
+#include "game/level/LevelError.h"
+#include "sim/world/LevelDesc.h"
+
+namespace game {
+
+inline constexpr uint64_t kMaxLevelJsonBytes = 4ull << 20;
+inline constexpr size_t kMaxLevelProps = 4096;
+
+struct LoadedLevel {
+    std::filesystem::path path;  // the .json
+    sim::LevelDesc sim;          // for the simulation
+    effects::SceneDesc scene;    // for the renderer
+    // FNV-1a 64 over the JSON bytes, then each distinct asset in first-use order (car,
+    // boat, props): its name and its file's bytes (and external buffers), each with its
+    // length. Identifies the level's content in replays.
+    uint64_t content_hash = 0;
+};
+
+// A level name ("harbour" -> <data_dir>/levels/harbour.json) or a path (contains '/'
+// or ends in .json). Does not check that the file exists.
+std::filesystem::path resolve_level_path(std::string_view name_or_path);
+
+// Throws LevelError with one message naming the file and what is wrong.
+LoadedLevel load_level(std::string_view name_or_path);
+
+}  // namespace game

@@ -1,0 +1,195 @@
+#include "game/play/DebugUi.h"
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "sim/vehicle/Boat.h"
+#include "sim/vehicle/Car.h"
+
+namespace game {
+
+namespace {
+
+std::string format(const char* fmt, auto... values) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, fmt, values...);
+    return buf;
+}
+
+}  // namespace
+
+const char* vehicle_name(sim::Vehicle v) { return v == sim::Vehicle::Car ? "car" : "boat"; }
+
+const char* view_name(sim::ViewMode v) { return v == sim::ViewMode::Chase ? "chase" : "driver"; }
+
+const char* wiper_name(sim::WiperMode m) {
+    switch (m) {
+        case sim::WiperMode::Off: return "off";
+        case sim::WiperMode::Intermittent: return "intermittent";
+        case sim::WiperMode::Low: return "low";
+        case sim::WiperMode::High: return "high";
+    }
+    return "?";
+}
+
+HudState hud_state(const sim::World& world) {
+    const sim::Player& player = world.get<sim::Player>();
+    HudState hud;
+    hud.vehicle = player.vehicle();
+    hud.view = player.view();
+    hud.wipers = player.wipers();
+    hud.rain_intensity = player.rain_intensity();
+    hud.tick = world.tick();
+    const float speed_mps = hud.vehicle == sim::Vehicle::Car ? world.get<sim::Car>().speed_mps()
+                                                              : world.get<sim::Boat>().speed_mps();
+    hud.speed_kmh = speed_mps * 3.6f;
+    return hud;
+}
+
+std::vector<std::string> hud_lines(const HudState& hud) {
+    std::vector<std::string> lines;
+    std::string flags;
+    if (hud.paused) flags += "PAUSED  ";
+    if (hud.recording) flags += "REC  ";
+    if (!hud.status.empty()) flags += hud.status;
+    if (!flags.empty()) lines.push_back(flags);
+    lines.push_back(format("%.0f km/h  %s, %s view", double(hud.speed_kmh), vehicle_name(hud.vehicle),
+                           view_name(hud.view)));
+    lines.push_back(format("wipers %s  rain %.0f%%", wiper_name(hud.wipers), double(hud.rain_intensity) * 100.0));
+    lines.push_back(format("tick %llu  %.1f fps", static_cast<unsigned long long>(hud.tick), hud.fps));
+    double total_ms = 0.0;
+    for (const effects::gl::PassTime& p : hud.passes) {
+        lines.push_back(format("%-12s %6.2f ms", p.name.c_str(), p.average_ms));
+        total_ms += p.average_ms;
+    }
+    if (!hud.passes.empty()) lines.push_back(format("%-12s %6.2f ms", "total", total_ms));
+    return lines;
+}
+
+std::vector<ParamGroup> group_params(const std::vector<effects::Param>& params) {
+    std::vector<ParamGroup> groups;
+    for (size_t i = 0; i < params.size(); ++i) {
+        ParamGroup* group = nullptr;
+        for (ParamGroup& g : groups)
+            if (g.name == params[i].group) group = &g;
+        if (!group) group = &groups.emplace_back(ParamGroup{params[i].group, {}});
+        group->params.push_back(i);
+    }
+    return groups;
+}
+
+DebugUi::DebugUi(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini dropped into the working directory
+    ImGui::StyleColorsDark();
+    if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) {
+        ImGui::DestroyContext();
+        throw std::runtime_error("Dear ImGui: the GLFW backend failed to initialise");
+    }
+    if (!ImGui_ImplOpenGL3_Init("#version 450")) {
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+        throw std::runtime_error("Dear ImGui: the OpenGL 3 backend failed to initialise for GLSL 4.50");
+    }
+}
+
+DebugUi::~DebugUi() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+bool DebugUi::wants_keyboard() const { return ImGui::GetIO().WantTextInput; }
+
+void DebugUi::begin_frame() {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+void DebugUi::draw_hud(const HudState& hud) {
+    ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.45f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoInputs;
+    if (ImGui::Begin("hud", nullptr, flags)) {
+        const std::vector<std::string> lines = hud_lines(hud);
+        // The state line (PAUSED, REC, status) comes first when there is one and stands out.
+        const bool has_state_line = hud.paused || hud.recording || !hud.status.empty();
+        for (size_t i = 0; i < lines.size(); ++i) {
+            const bool alert = has_state_line && i == 0;
+            if (alert) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+            ImGui::TextUnformatted(lines[i].c_str());
+            if (alert) ImGui::PopStyleColor();
+        }
+    }
+    ImGui::End();
+}
+
+void DebugUi::draw_debug_panel(effects::Renderer& renderer, bool* open) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10.0f, viewport->WorkPos.y + 10.0f),
+                            ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(380.0f, viewport->WorkSize.y * 0.8f), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Debug (F1)", open)) {
+        ImGui::End();
+        return;
+    }
+    bool profile = renderer.timing() == effects::gl::TimingMode::Profile;
+    if (ImGui::Checkbox("profile timing (glFinish per pass, F2)", &profile))
+        renderer.set_timing(profile ? effects::gl::TimingMode::Profile : effects::gl::TimingMode::GpuQueries);
+
+    if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("ms");
+        ImGui::TableSetupColumn("average ms");
+        ImGui::TableHeadersRow();
+        for (const effects::gl::PassTime& p : renderer.pass_times()) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(p.name.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", p.ms);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", p.average_ms);
+        }
+        ImGui::EndTable();
+    }
+
+    const std::vector<effects::Param>& params = renderer.params().params();
+    if (params.empty()) ImGui::TextDisabled("no params registered");
+    for (const ParamGroup& group : group_params(params)) {
+        if (!ImGui::CollapsingHeader(group.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
+        for (size_t i : group.params) {
+            const effects::Param& p = params[i];
+            ImGui::PushID(int(i));  // names may repeat across groups
+            switch (p.kind) {
+                case effects::Param::Kind::Float:
+                    ImGui::SliderFloat(p.name.c_str(), static_cast<float*>(p.value), p.min, p.max);
+                    break;
+                case effects::Param::Kind::Int:
+                    ImGui::SliderInt(p.name.c_str(), static_cast<int*>(p.value), int(p.min), int(p.max));
+                    break;
+                case effects::Param::Kind::Bool:
+                    ImGui::Checkbox(p.name.c_str(), static_cast<bool*>(p.value));
+                    break;
+            }
+            ImGui::PopID();
+        }
+    }
+    ImGui::End();
+}
+
+void DebugUi::end_frame() {
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+}  // namespace game

@@ -1,0 +1,84 @@
+#include "game/play/Window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <stdexcept>
+
+namespace game {
+
+namespace {
+
+// GLFW reports errors through a callback; keep the last one for the exception text.
+std::string g_last_glfw_error;
+
+void on_glfw_error(int code, const char* description) {
+    g_last_glfw_error = std::string(description ? description : "unknown error") + " (GLFW error " +
+                        std::to_string(code) + ")";
+}
+
+[[noreturn]] void fail(const std::string& step) {
+    std::string why = g_last_glfw_error.empty() ? "no reason given" : g_last_glfw_error;
+    throw std::runtime_error("cannot open a window: " + step + " failed: " + why);
+}
+
+}  // namespace
+
+Window::Window(const Options& options) {
+    g_last_glfw_error.clear();
+    glfwSetErrorCallback(on_glfw_error);
+    if (!glfwInit()) fail("glfwInit");
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    glfwWindowHint(GLFW_DOUBLEBUFFER, GLFW_TRUE);
+    window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+    if (!window_) {
+        glfwTerminate();
+        fail("creating a " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+             " window with an OpenGL 4.5 core context");
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(options.vsync ? 1 : 0);
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetInputMode(window_, GLFW_STICKY_KEYS, GLFW_TRUE);
+    // Installed before Dear ImGui's, which chains to it.
+    glfwSetKeyCallback(window_, on_key);
+}
+
+Window::~Window() {
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+    glfwSetErrorCallback(nullptr);
+}
+
+bool Window::should_close() const { return glfwWindowShouldClose(window_) != 0; }
+void Window::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+void Window::poll_events() { glfwPollEvents(); }
+void Window::wait_events(double timeout_s) { glfwWaitEventsTimeout(timeout_s); }
+void Window::swap_buffers() { glfwSwapBuffers(window_); }
+
+Window::Size Window::framebuffer_size() const {
+    Size s;
+    glfwGetFramebufferSize(window_, &s.width, &s.height);
+    return s;
+}
+
+bool Window::key_down(int glfw_key) const { return glfwGetKey(window_, glfw_key) == GLFW_PRESS; }
+
+std::vector<int> Window::take_key_presses() {
+    std::vector<int> out;
+    out.swap(presses_);
+    return out;
+}
+
+void Window::on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+    auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+    if (self && action == GLFW_PRESS && key != GLFW_KEY_UNKNOWN) self->presses_.push_back(key);
+}
+
+}  // namespace game

@@ -1,0 +1,45 @@
+#pragma once
+// Scripted input: a small text file of timed control changes, expanded to one TickInput per
+// tick. Used to record replays without a person at the keyboard.
+//
+//   # comment                  blank lines and '#' comments anywhere
+//   level harbour              optional: the level to drive
+//   frames 480x270             optional: checkpoint frame size, each side 16..4096
+//   checkpoints 90 300 600     optional: ticks whose frames are checked, ascending, < end
+//   0    hold throttle         from tick 0 hold these controls (replaces the held set)
+//   200  tap camera            add 'camera' at tick 200 only, on top of the held set
+//   300  hold                  hold nothing
+//   900  end                   required, last: simulate ticks 0..899
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "game/replay/ReplayFormat.h"
+#include "sim/core/TickInput.h"
+
+namespace game {
+
+// A script must fit in a replay.
+inline constexpr uint32_t kMaxScriptTick = kMaxReplayTicks;
+inline constexpr uintmax_t kMaxScriptFileBytes = 1u << 20;
+
+struct InputScript {
+    std::string level;  // empty if the script doesn't name one
+    uint32_t frame_width = 480, frame_height = 270;
+    std::vector<uint32_t> checkpoints;   // ascending, unique, each < end_tick
+    uint32_t end_tick = 0;               // number of ticks to simulate, >= 1
+    std::vector<sim::TickInput> inputs;  // expanded: inputs[t] is applied at tick t; size == end_tick
+};
+
+// "file:LINE: message", or "file: message" when no line is involved.
+struct ScriptError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+InputScript parse_script(std::string_view text, std::string_view source_name);
+InputScript load_script(const std::filesystem::path& path);
+
+}  // namespace game

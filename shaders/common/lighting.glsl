@@ -1,0 +1,67 @@
+// Sun with a shadow map, sky ambient and environment reflection: the base lighting
+// every opaque surface gets.
+uniform sampler2DShadow u_shadow_map;
+uniform mat4 u_shadow_matrix;  // world -> shadow texture coordinates and depth
+uniform samplerCube u_env;
+uniform float u_env_max_lod;
+
+float sun_visibility(vec3 world_pos, vec3 n) {
+    vec4 s = u_shadow_matrix * vec4(world_pos + n * 0.08, 1.0);
+    vec3 p = s.xyz / s.w;
+    if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
+    vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
+    float sum = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) sum += texture(u_shadow_map, vec3(p.xy + vec2(x, y) * texel, p.z - 0.0015));
+    return sum / 9.0;
+}
+
+vec3 fresnel_schlick(float cos_theta, vec3 f0) {
+    return f0 + (1.0 - f0) * pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);
+}
+
+// GGX normal distribution with Smith-Schlick visibility, for the sun's highlight.
+float ggx_specular(vec3 n, vec3 v, vec3 l, float roughness) {
+    vec3 h = normalize(v + l);
+    float a = max(roughness * roughness, 0.002);
+    float a2 = a * a;
+    float nh = max(dot(n, h), 0.0), nv = max(dot(n, v), 1e-3), nl = max(dot(n, l), 0.0);
+    float d = nh * nh * (a2 - 1.0) + 1.0;
+    float k = a * 0.5;
+    float vis = 1.0 / ((nv * (1.0 - k) + k) * (nl * (1.0 - k) + k));
+    return a2 / (3.14159265 * d * d) * vis * 0.25;
+}
+
+// Pre-integrated environment BRDF, analytic fit (Karis, "Physically Based Shading on
+// Mobile", 2014): how much of the blurred environment a rough surface reflects.
+vec3 env_brdf(vec3 f0, float roughness, float nv) {
+    const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
+    const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+    vec4 r = roughness * c0 + c1;
+    float a004 = min(r.x * r.x, exp2(-9.28 * nv)) * r.x + r.y;
+    vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+    return f0 * ab.x + ab.y;
+}
+
+vec3 shade_surface(vec3 base, float roughness, float metallic, vec3 world_pos, vec3 n, vec3 eye) {
+    vec3 v = normalize(eye - world_pos);
+    vec3 l = u_sun_dir;
+    float nl = max(dot(n, l), 0.0);
+    float shadow = nl > 0.0 ? sun_visibility(world_pos, n) : 0.0;
+    vec3 f0 = mix(vec3(0.04), base, metallic);
+    vec3 diffuse_colour = base * (1.0 - metallic);
+    vec3 f = fresnel_schlick(max(dot(n, v), 0.0), f0);
+    vec3 direct = (diffuse_colour / 3.14159265 * (1.0 - f) + f * ggx_specular(n, v, l, roughness)) * u_sun_radiance * nl * shadow;
+    vec3 ambient = textureLod(u_env, n, u_env_max_lod).rgb * diffuse_colour * (0.6 + 0.4 * n.y);
+    vec3 r = reflect(-v, n);
+    vec3 spec_env = textureLod(u_env, r, roughness * u_env_max_lod).rgb * env_brdf(f0, roughness, max(dot(n, v), 1e-3));
+    return direct + ambient + spec_env;
+}
+
+// Aerial perspective: distant things fade into the sky's horizon colour.
+vec3 apply_fog(vec3 colour, vec3 world_pos, vec3 eye) {
+    vec3 d = world_pos - eye;
+    float dist = length(d);
+    float fog = 1.0 - exp(-dist * 0.0012);
+    return mix(colour, sky_radiance(d / max(dist, 1e-4), false), fog);
+}

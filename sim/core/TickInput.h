@@ -1,0 +1,48 @@
+#pragma once
+// The quantised per-tick player input: what is recorded, replayed and applied.
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace sim {
+
+// Held controls, one bit each. One-shot actions (switch, throw, fire, ...) fire on the
+// tick their bit goes from 0 to 1, so a replay only needs the held state per tick.
+enum class Control : uint16_t {
+    Throttle = 1u << 0,
+    Brake = 1u << 1,
+    SteerLeft = 1u << 2,
+    SteerRight = 1u << 3,
+    SwitchVehicle = 1u << 4,
+    ThrowHeavy = 1u << 5,
+    ThrowLight = 1u << 6,
+    Fire = 1u << 7,
+    Camera = 1u << 8,
+    Wipers = 1u << 9,
+    RainUp = 1u << 10,
+    RainDown = 1u << 11,
+};
+inline constexpr int kControlCount = 12;
+inline constexpr uint16_t kAllControls = (1u << kControlCount) - 1;
+
+// Script / CLI names, index i names bit i.
+inline constexpr std::string_view kControlNames[kControlCount] = {
+    "throttle", "brake",      "steer_left", "steer_right", "switch_vehicle", "throw_heavy",
+    "throw_light", "fire",    "camera",     "wipers",      "rain_up",        "rain_down"};
+
+std::optional<Control> control_from_name(std::string_view name);
+
+struct TickInput {
+    uint16_t held = 0;  // bitmask of Control
+
+    bool has(Control c) const { return (held & static_cast<uint16_t>(c)) != 0; }
+    void set(Control c, bool on) {
+        held = on ? uint16_t(held | uint16_t(c)) : uint16_t(held & ~uint16_t(c));
+    }
+    bool operator==(const TickInput&) const = default;
+};
+
+// Unknown bits are dropped so that any recorded value is a valid input.
+inline TickInput quantise(TickInput in) { return TickInput{uint16_t(in.held & kAllControls)}; }
+
+}  // namespace sim

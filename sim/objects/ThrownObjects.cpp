@@ -1,0 +1,141 @@
+#include "sim/objects/ThrownObjects.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/core/Hash.h"
+#include "sim/player/Player.h"
+#include "sim/vehicle/Boat.h"
+#include "sim/vehicle/Car.h"
+#include "sim/world/Terrain.h"
+#include "sim/world/World.h"
+
+namespace sim {
+
+namespace {
+constexpr float kGravity = 9.81f;
+constexpr float kWaterDensity = 1000.0f;
+constexpr float kAirDensity = 1.2f;
+constexpr float kPi = 3.14159265f;
+constexpr int kSubsteps = 4;
+
+void step_object(ThrownObject& o, const World& world, float dt) {
+    const Terrain& terrain = world.terrain();
+    const float r = o.radius_m;
+    const float volume = 4.0f / 3.0f * kPi * r * r * r;
+    const float area = kPi * r * r;
+    o.entered_this_tick = false;
+    float h = dt / kSubsteps;
+    for (int i = 0; i < kSubsteps; ++i) {
+        float sea = world.sea().height_at({o.position.x, o.position.z});
+        float sub = submerged_sphere_volume(r, sea - o.position.y);
+        float wet = sub / volume;
+        float speed = std::sqrt(o.velocity.x * o.velocity.x + o.velocity.y * o.velocity.y +
+                                o.velocity.z * o.velocity.z);
+        // Quadratic drag in air and in water, weighted by how much is wet; a little
+        // linear damping in water stands in for added mass and wave radiation.
+        float rho = kAirDensity + (kWaterDensity - kAirDensity) * wet;
+        glm::vec3 force = -0.5f * rho * 0.47f * area * speed * o.velocity - 4.0f * wet * o.mass_kg * o.velocity;
+        force.y += kWaterDensity * sub * kGravity - o.mass_kg * kGravity;
+        glm::vec3 prev = o.position;
+        o.velocity += force / o.mass_kg * h;
+        o.position += o.velocity * h;
+
+        if (prev.y > sea && o.position.y <= sea && !o.in_water) {
+            o.in_water = true;
+            o.entered_this_tick = true;
+            o.entry_position = {o.position.x, sea, o.position.z};
+            o.entry_velocity = o.velocity;
+        } else if (o.position.y > sea + 3.0f * r) {
+            // Clearly airborne again (a skip): the next touch-down is a new entry.
+            o.in_water = false;
+        }
+
+        glm::vec2 xz(o.position.x, o.position.z);
+        if (auto push = terrain.resolve_solids(xz, r, o.position.y - r, o.position.y + r)) {
+            o.position.x = xz.x;
+            o.position.z = xz.y;
+            glm::vec2 n = *push / std::max(std::sqrt(push->x * push->x + push->y * push->y), 1e-6f);
+            float into = o.velocity.x * n.x + o.velocity.z * n.y;
+            if (into < 0.0f) {
+                o.velocity.x -= 1.4f * into * n.x;
+                o.velocity.z -= 1.4f * into * n.y;
+            }
+        }
+        float ground = terrain.support_height({o.position.x, o.position.z}, o.position.y, r);
+        if (o.position.y - r < ground) {
+            o.position.y = ground + r;
+            if (o.velocity.y < 0.0f) o.velocity.y *= -0.3f;
+            o.velocity.x *= 0.96f;
+            o.velocity.z *= 0.96f;
+            if (std::fabs(o.velocity.y) < 0.2f) o.velocity.y = 0.0f;
+        }
+        float half = terrain.level().half_extent_m - r;
+        o.position.x = std::clamp(o.position.x, -half, half);
+        o.position.z = std::clamp(o.position.z, -half, half);
+    }
+    ++o.age_ticks;
+}
+}  // namespace
+
+float submerged_sphere_volume(float radius, float depth) {
+    float d = std::clamp(depth + radius, 0.0f, 2.0f * radius);  // height of the wet cap
+    return kPi * d * d * (3.0f * radius - d) / 3.0f;
+}
+
+void ThrownObjects::launch(const ThrowKind& kind, glm::vec3 from, glm::vec3 forward, glm::vec3 carrier_velocity) {
+    if (objects_.size() == kMaxObjects) objects_.erase(objects_.begin());
+    ThrownObject o;
+    o.radius_m = kind.radius_m;
+    o.density_kgm3 = kind.density_kgm3;
+    o.mass_kg = kind.density_kgm3 * 4.0f / 3.0f * kPi * kind.radius_m * kind.radius_m * kind.radius_m;
+    o.position = from;
+    // Thrown at about 25 degrees above the facing direction.
+    o.velocity = carrier_velocity + forward * (kind.speed_mps * 0.9063f) + glm::vec3(0, kind.speed_mps * 0.4226f, 0);
+    objects_.push_back(o);
+}
+
+void ThrownObjects::step(StepContext& ctx) {
+    const Player& player = ctx.world.get<Player>();
+    if (player.throws_heavy() || player.throws_light()) {
+        Pose pose;
+        glm::vec3 vel;
+        if (player.vehicle() == Vehicle::Car) {
+            pose = ctx.world.get<Car>().pose();
+            vel = ctx.world.get<Car>().velocity();
+        } else {
+            pose = ctx.world.get<Boat>().pose();
+            vel = ctx.world.get<Boat>().velocity();
+        }
+        glm::vec3 fwd = pose.forward_flat();
+        glm::vec3 from = pose.position + glm::vec3(0.0f, 1.8f, 0.0f) + fwd * 0.5f;
+        if (player.throws_heavy()) launch(kHeavy, from, fwd, vel);
+        if (player.throws_light()) launch(kLight, from + pose.right_flat() * 0.4f, fwd, vel);
+    }
+
+    const World& world = ctx.world;
+    ctx.jobs.parallel_for(objects_.size(), [&](size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) step_object(objects_[i], world, ctx.dt);
+    });
+    // Events in object order, whatever thread stepped them.
+    for (const ThrownObject& o : objects_)
+        if (o.entered_this_tick)
+            ctx.world.events().water_entries.push_back(
+                WaterEntry{o.entry_position, o.entry_velocity, o.radius_m, o.mass_kg, o.sinks()});
+}
+
+uint64_t ThrownObjects::hash() const {
+    Hasher h;
+    h.u32(uint32_t(objects_.size()));
+    for (const ThrownObject& o : objects_) {
+        h.vec(o.position);
+        h.vec(o.velocity);
+        h.f32(o.radius_m);
+        h.f32(o.density_kgm3);
+        h.u32(o.age_ticks);
+        h.u32(uint32_t(o.in_water));
+    }
+    return h.value();
+}
+
+}  // namespace sim

@@ -1,0 +1,67 @@
+#include "sim/player/CameraRig.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/core/Hash.h"
+#include "sim/player/Player.h"
+#include "sim/vehicle/Boat.h"
+#include "sim/vehicle/Car.h"
+#include "sim/world/Terrain.h"
+#include "sim/world/World.h"
+
+namespace sim {
+
+CameraRig::CameraRig(CameraRigParams params) : p_(params) {}
+
+void CameraRig::step(StepContext& ctx) {
+    const Player& player = ctx.world.get<Player>();
+    bool in_car = player.vehicle() == Vehicle::Car;
+    const Pose& pose = in_car ? ctx.world.get<Car>().pose() : ctx.world.get<Boat>().pose();
+    float speed = in_car ? ctx.world.get<Car>().speed_mps() : ctx.world.get<Boat>().speed_mps();
+    glm::vec3 fwd = pose.forward_flat();
+
+    float dist = p_.chase_distance_m + p_.speed_pullback * std::fabs(speed);
+    glm::vec3 want_eye = pose.position - fwd * dist + glm::vec3(0.0f, p_.chase_height_m, 0.0f);
+    glm::vec3 want_target = pose.position + fwd * p_.chase_look_ahead_m + glm::vec3(0.0f, 1.0f, 0.0f);
+    if (!initialised_) {
+        chase_eye_ = want_eye;
+        chase_target_ = want_target;
+        initialised_ = true;
+    }
+    chase_eye_ += (want_eye - chase_eye_) * p_.follow_rate;
+    chase_target_ += (want_target - chase_target_) * (2.0f * p_.follow_rate);
+    const Terrain& terrain = ctx.world.terrain();
+    float floor = std::max(terrain.ground_height({chase_eye_.x, chase_eye_.z}),
+                           ctx.world.sea().height_at({chase_eye_.x, chase_eye_.z})) + 0.6f;
+    chase_eye_.y = std::max(chase_eye_.y, floor);
+
+    if (player.view() == ViewMode::Driver) {
+        glm::mat4 m = pose.matrix();
+        // The driver's eyes: behind the windshield, above the seat.
+        glm::vec3 seat = in_car ? glm::vec3(-0.45f, 1.32f, 0.0f) : glm::vec3(-0.6f, 1.9f, 0.0f);
+        glm::vec3 look = seat + glm::vec3(10.0f, -0.6f, 0.0f);
+        view_.eye = glm::vec3(m * glm::vec4(seat, 1.0f));
+        view_.target = glm::vec3(m * glm::vec4(look, 1.0f));
+        view_.up = glm::vec3(m * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+        view_.fov_y_deg = p_.driver_fov_deg;
+    } else {
+        view_.eye = chase_eye_;
+        view_.target = chase_target_;
+        view_.up = {0.0f, 1.0f, 0.0f};
+        view_.fov_y_deg = p_.chase_fov_deg;
+    }
+}
+
+uint64_t CameraRig::hash() const {
+    Hasher h;
+    h.vec(view_.eye);
+    h.vec(view_.target);
+    h.vec(view_.up);
+    h.f32(view_.fov_y_deg);
+    h.vec(chase_eye_);
+    h.vec(chase_target_);
+    return h.value();
+}
+
+}  // namespace sim

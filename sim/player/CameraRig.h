@@ -1,0 +1,44 @@
+#pragma once
+// Where the player looks from: a smoothed chase camera behind the vehicle, or the
+// driver's seat. Sim state so that replays reproduce every frame exactly.
+#include <glm/vec3.hpp>
+
+#include "sim/world/Subsystem.h"
+
+namespace sim {
+
+struct CameraView {
+    glm::vec3 eye{0.0f, 5.0f, 10.0f};
+    glm::vec3 target{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fov_y_deg = 60.0f;
+};
+
+struct CameraRigParams {
+    float chase_distance_m = 8.5f;
+    float chase_height_m = 3.2f;
+    float chase_look_ahead_m = 4.0f;   // look at a point ahead of the vehicle
+    float speed_pullback = 0.12f;      // extra distance per m/s
+    float follow_rate = 0.08f;         // fraction of the gap closed per tick
+    float chase_fov_deg = 60.0f;
+    float driver_fov_deg = 70.0f;
+};
+
+class CameraRig final : public Subsystem {
+public:
+    explicit CameraRig(CameraRigParams params = {});
+
+    std::string_view name() const override { return "camera"; }
+    void step(StepContext& ctx) override;
+    uint64_t hash() const override;
+
+    const CameraView& view() const { return view_; }
+
+private:
+    CameraRigParams p_;
+    CameraView view_;
+    glm::vec3 chase_eye_{0.0f}, chase_target_{0.0f};
+    bool initialised_ = false;
+};
+
+}  // namespace sim

@@ -1,0 +1,52 @@
+#include "sim/player/Player.h"
+
+#include <algorithm>
+
+#include "sim/core/Hash.h"
+#include "sim/vehicle/Boat.h"
+#include "sim/vehicle/Car.h"
+#include "sim/world/World.h"
+
+namespace sim {
+
+Player::Player(float rain_intensity) : rain_intensity_(std::clamp(rain_intensity, 0.0f, 1.0f)) {}
+
+void Player::step(StepContext& ctx) {
+    const TickInput& in = ctx.input;
+    controls_.throttle = in.has(Control::Throttle) ? 1.0f : 0.0f;
+    controls_.brake = in.has(Control::Brake) ? 1.0f : 0.0f;
+    controls_.steer = (in.has(Control::SteerLeft) ? 1.0f : 0.0f) - (in.has(Control::SteerRight) ? 1.0f : 0.0f);
+
+    if (ctx.pressed(Control::SwitchVehicle)) {
+        glm::vec3 car = ctx.world.get<Car>().position();
+        glm::vec3 boat = ctx.world.get<Boat>().position();
+        glm::vec2 d(car.x - boat.x, car.z - boat.z);
+        if (d.x * d.x + d.y * d.y <= kSwitchDistance_m * kSwitchDistance_m)
+            vehicle_ = vehicle_ == Vehicle::Car ? Vehicle::Boat : Vehicle::Car;
+    }
+    if (ctx.pressed(Control::Camera)) view_ = view_ == ViewMode::Chase ? ViewMode::Driver : ViewMode::Chase;
+    if (ctx.pressed(Control::Wipers)) wipers_ = static_cast<WiperMode>((uint8_t(wipers_) + 1) % 4);
+    if (ctx.pressed(Control::RainUp)) rain_intensity_ = std::min(1.0f, rain_intensity_ + kRainStep);
+    if (ctx.pressed(Control::RainDown)) rain_intensity_ = std::max(0.0f, rain_intensity_ - kRainStep);
+    throw_heavy_ = ctx.pressed(Control::ThrowHeavy);
+    throw_light_ = ctx.pressed(Control::ThrowLight);
+    fire_ = ctx.pressed(Control::Fire);
+}
+
+DriveInput Player::drive_input(Vehicle v) const {
+    if (v == vehicle_) return controls_;
+    return DriveInput{0.0f, 1.0f, 0.0f, true};
+}
+
+uint64_t Player::hash() const {
+    Hasher h;
+    h.u32(uint32_t(vehicle_) | uint32_t(view_) << 8 | uint32_t(wipers_) << 16);
+    h.f32(rain_intensity_);
+    h.f32(controls_.throttle);
+    h.f32(controls_.brake);
+    h.f32(controls_.steer);
+    h.u32(uint32_t(throw_heavy_) | uint32_t(throw_light_) << 1 | uint32_t(fire_) << 2);
+    return h.value();
+}
+
+}  // namespace sim

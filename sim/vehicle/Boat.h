@@ -1,0 +1,53 @@
+#pragma once
+// The boat: a rigid hull floating on the sea surface. Buoyancy at four hull points
+// gives heave, pitch and roll; thrust, rudder and hull drag move it in the plane.
+#include "sim/core/Pose.h"
+#include "sim/player/Player.h"
+#include "sim/world/LevelDesc.h"
+#include "sim/world/Subsystem.h"
+
+namespace sim {
+
+struct BoatParams {
+    float mass_kg = 1500.0f;
+    float length_m = 6.0f;
+    float beam_m = 2.4f;
+    float waterplane_area_m2 = 11.5f;  // hull area at the waterline
+    float thrust_n = 9000.0f;
+    float reverse_thrust_n = 4000.0f;
+    float drag_long = 60.0f;        // N per (m/s)^2 along the hull
+    float drag_lat = 1500.0f;       // N per (m/s)^2 sideways
+    float rudder_gain = 0.1f;       // yaw acceleration per (m/s * unit steer)
+    float yaw_damping = 2.0f;       // 1/s
+    float heave_damping_ratio = 0.4f;
+    float planing_pitch_rad = 0.05f;  // bow lift at full speed
+    float min_depth_m = 0.7f;       // grounds in shallower water
+};
+
+class Boat final : public Subsystem {
+public:
+    Boat(const Spawn& spawn, BoatParams params = {});
+
+    std::string_view name() const override { return "boat"; }
+    void step(StepContext& ctx) override;
+    uint64_t hash() const override;
+
+    const Pose& pose() const { return pose_; }
+    glm::vec3 position() const { return pose_.position; }
+    glm::vec3 velocity() const;
+    float speed_mps() const { return u_; }
+    const BoatParams& params() const { return p_; }
+    // Hull points used for buoyancy, in model space (x forward, z right).
+    static constexpr int kHullPoints = 4;
+    glm::vec2 hull_point(int i) const;
+
+private:
+    void substep(const DriveInput& in, const class World& world, float h);
+
+    BoatParams p_;
+    Pose pose_;
+    float u_ = 0.0f, v_ = 0.0f, r_ = 0.0f;  // forward, leftward speed; yaw rate
+    float heave_rate_ = 0.0f, pitch_rate_ = 0.0f, roll_rate_ = 0.0f;
+};
+
+}  // namespace sim

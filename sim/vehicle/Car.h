@@ -1,0 +1,63 @@
+#pragma once
+// The car: a dynamic bicycle model (front steer, rear drive) with saturating tyre
+// grip that depends on the surface (road or not), following the ground and decks.
+#include "sim/core/Pose.h"
+#include "sim/player/Player.h"
+#include "sim/world/LevelDesc.h"
+#include "sim/world/Subsystem.h"
+
+namespace sim {
+
+struct CarParams {
+    float mass_kg = 1300.0f;
+    float yaw_inertia_kgm2 = 2000.0f;
+    float cg_to_front_m = 1.2f;
+    float cg_to_rear_m = 1.4f;
+    float cornering_stiffness_npr = 80000.0f;  // per axle, N per radian of slip
+    float grip_road = 1.0f;                    // friction coefficient
+    float grip_off_road = 0.65f;
+    float engine_force_n = 6000.0f;
+    float engine_power_w = 90000.0f;
+    float brake_force_n = 12000.0f;
+    float reverse_speed_mps = 5.0f;
+    float drag_coeff = 0.42f;       // N per (m/s)^2
+    float rolling_resist_n = 180.0f;
+    float engine_braking_n = 500.0f;  // off the throttle the drivetrain slows the car
+    float max_steer_rad = 0.55f;
+    float steer_rate_radps = 2.5f;
+    float radius_m = 1.1f;          // collision circles at front and rear axle
+    float height_m = 1.45f;
+};
+
+class Car final : public Subsystem {
+public:
+    Car(const Spawn& spawn, CarParams params = {});
+
+    std::string_view name() const override { return "car"; }
+    void step(StepContext& ctx) override;
+    uint64_t hash() const override;
+
+    const Pose& pose() const { return pose_; }
+    glm::vec3 position() const { return pose_.position; }
+    glm::vec3 velocity() const;  // world space
+    float speed_mps() const { return u_; }  // signed, along the car
+    float steer_rad() const { return steer_; }
+    float wheel_spin_rad() const { return wheel_spin_; }
+    glm::vec2 accel_body_mps2() const { return accel_; }  // longitudinal, lateral: drops lurch with it
+    const CarParams& params() const { return p_; }
+
+private:
+    void substep(const DriveInput& in, bool reverse, const class Terrain& terrain, float h);
+    void follow_ground(const class Terrain& terrain);
+
+    CarParams p_;
+    Pose pose_;
+    float u_ = 0.0f;      // forward speed, m/s
+    float v_ = 0.0f;      // lateral speed, m/s (positive to the left)
+    float r_ = 0.0f;      // yaw rate, rad/s
+    float steer_ = 0.0f;  // front wheel angle, rad (positive turns left)
+    float wheel_spin_ = 0.0f;
+    glm::vec2 accel_{0.0f};
+};
+
+}  // namespace sim

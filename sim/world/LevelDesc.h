@@ -1,0 +1,64 @@
+#pragma once
+// What the sim needs to know about a level: ground, sea, solids, spawn points. Filled
+// by the game's level loader from the level JSON and its glTF assets; no files here.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace sim {
+
+struct Aabb {
+    glm::vec3 min{0.0f}, max{0.0f};
+    bool contains_xz(glm::vec2 p) const {
+        return p.x >= min.x && p.x <= max.x && p.y >= min.z && p.y <= max.z;
+    }
+};
+
+struct Rect {  // on the ground plane: x and z
+    glm::vec2 min{0.0f}, max{0.0f};
+    bool contains(glm::vec2 p) const {
+        return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y;
+    }
+};
+
+struct Hill {
+    glm::vec2 centre_xz{0.0f};
+    float radius_m = 10.0f;  // Gaussian sigma
+    float height_m = 1.0f;
+};
+
+struct Spawn {
+    glm::vec3 position{0.0f};
+    float heading_rad = 0.0f;  // 0 faces +x, positive turns towards -z (counter-clockwise seen from above)
+};
+
+struct LevelDesc {
+    std::string id;
+    uint64_t seed = 1;
+
+    // Ground: land where z < shore_z_m at land_height_m plus hills; sea bed beyond.
+    float half_extent_m = 160.0f;  // the world is [-h, h] in x and z
+    float land_height_m = 1.2f;
+    float shore_z_m = 0.0f;
+    float sea_level_m = 0.0f;
+    float seabed_m = -6.0f;
+    std::vector<Hill> hills;
+    std::vector<Rect> roads;  // better tyre grip than the rest of the land
+
+    // Boxes that vehicles and thrown objects collide with (walls, crates, pilings).
+    std::vector<Aabb> solids;
+    // Boxes whose tops can be driven on (the pier deck).
+    std::vector<Aabb> decks;
+
+    Spawn car_spawn;
+    Spawn boat_spawn;
+    glm::vec3 tank_spot{0.0f};  // where the fluid tank stands
+
+    glm::vec3 sun_direction{0.4f, 0.8f, 0.3f};  // towards the sun, normalised by the loader
+    float rain_intensity = 0.0f;                // 0..1 at start
+};
+
+}  // namespace sim

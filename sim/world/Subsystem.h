@@ -1,0 +1,34 @@
+#pragma once
+// One deterministic part of the world (car, boat, water, rain, ...). World steps its
+// subsystems in a fixed order each tick and hashes each one.
+#include <cstdint>
+#include <string_view>
+
+#include "sim/core/JobPool.h"
+#include "sim/core/TickInput.h"
+
+namespace sim {
+
+class World;
+
+struct StepContext {
+    TickInput input;     // held this tick
+    TickInput previous;  // held last tick
+    World& world;
+    JobPool& jobs;
+    float dt = 1.0f / 60.0f;
+    uint64_t tick = 0;  // index of the tick being stepped (0-based)
+
+    // True on the tick a control goes down: one-shot actions.
+    bool pressed(Control c) const { return input.has(c) && !previous.has(c); }
+};
+
+class Subsystem {
+public:
+    virtual ~Subsystem() = default;
+    virtual std::string_view name() const = 0;
+    virtual void step(StepContext& ctx) = 0;
+    virtual uint64_t hash() const = 0;
+};
+
+}  // namespace sim

@@ -1,0 +1,292 @@
+// Play mode without a window: key mapping, the fixed-step clock, HUD text, param
+// grouping, screenshot names and the no-display fallback.
+#include "game/cli/Commands.h"
+#include "game/cli/ExitCode.h"
+#include "game/play/DebugUi.h"
+#include "game/play/KeyboardInput.h"
+#include "game/play/PlayMode.h"
+#include "game/replay/FrameSelection.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using game::UiAction;
+using sim::Control;
+
+namespace {
+
+sim::TickInput keys(std::set<int> down) {
+    return game::input_from_keys([&](int key) { return down.count(key) != 0; });
+}
+
+uint16_t bit(Control c) { return static_cast<uint16_t>(c); }
+
+// Sets an environment variable for one scope and restores it afterwards.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, const char* value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        if (value)
+            setenv(name, value, 1);
+        else
+            unsetenv(name);
+    }
+    ~ScopedEnv() {
+        if (old_)
+            setenv(name_, old_->c_str(), 1);
+        else
+            unsetenv(name_);
+    }
+
+private:
+    const char* name_;
+    std::optional<std::string> old_;
+};
+
+}  // namespace
+
+TEST(KeyboardInput, NoKeysNoControls) { EXPECT_EQ(keys({}).held, 0); }
+
+TEST(KeyboardInput, EachKeyFromTheHelpHoldsItsControl) {
+    const std::pair<int, Control> expected[] = {
+        {GLFW_KEY_W, Control::Throttle},        {GLFW_KEY_UP, Control::Throttle},
+        {GLFW_KEY_S, Control::Brake},           {GLFW_KEY_DOWN, Control::Brake},
+        {GLFW_KEY_A, Control::SteerLeft},       {GLFW_KEY_LEFT, Control::SteerLeft},
+        {GLFW_KEY_D, Control::SteerRight},      {GLFW_KEY_RIGHT, Control::SteerRight},
+        {GLFW_KEY_E, Control::SwitchVehicle},   {GLFW_KEY_1, Control::ThrowHeavy},
+        {GLFW_KEY_2, Control::ThrowLight},      {GLFW_KEY_SPACE, Control::Fire},
+        {GLFW_KEY_C, Control::Camera},          {GLFW_KEY_V, Control::Wipers},
+        {GLFW_KEY_R, Control::RainUp},          {GLFW_KEY_F, Control::RainDown},
+    };
+    for (auto [key, control] : expected) EXPECT_EQ(keys({key}).held, bit(control)) << "GLFW key " << key;
+}
+
+TEST(KeyboardInput, EveryControlHasAKeyAndOnlyOneBinding) {
+    uint16_t seen = 0;
+    for (const game::KeyBinding& b : game::key_bindings()) {
+        EXPECT_EQ(seen & bit(b.control), 0) << "control bound twice";
+        seen |= bit(b.control);
+        EXPECT_NE(b.keys[0], 0);
+    }
+    EXPECT_EQ(seen, sim::kAllControls);
+}
+
+TEST(KeyboardInput, KeysCombine) {
+    EXPECT_EQ(keys({GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_SPACE}).held,
+              bit(Control::Throttle) | bit(Control::SteerLeft) | bit(Control::Fire));
+    // Both steering keys stay set; the sim steers by their difference.
+    EXPECT_EQ(keys({GLFW_KEY_LEFT, GLFW_KEY_D}).held, bit(Control::SteerLeft) | bit(Control::SteerRight));
+    // W and Up together are still one throttle.
+    EXPECT_EQ(keys({GLFW_KEY_W, GLFW_KEY_UP}).held, bit(Control::Throttle));
+}
+
+TEST(KeyboardInput, AllBoundKeysGiveAQuantisedInput) {
+    std::set<int> all;
+    for (const game::KeyBinding& b : game::key_bindings())
+        for (int k : b.keys)
+            if (k) all.insert(k);
+    sim::TickInput in = keys(all);
+    EXPECT_EQ(in.held, sim::kAllControls);
+    EXPECT_EQ(sim::quantise(in), in);
+}
+
+TEST(KeyboardInput, ProgramKeysAreNotControls) {
+    for (int key : {GLFW_KEY_P, GLFW_KEY_F12, GLFW_KEY_F1, GLFW_KEY_F2, GLFW_KEY_ESCAPE}) {
+        EXPECT_EQ(keys({key}).held, 0) << "GLFW key " << key;
+        EXPECT_TRUE(game::ui_action_for_key(key).has_value()) << "GLFW key " << key;
+    }
+    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_P), UiAction::Pause);
+    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F12), UiAction::Screenshot);
+    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F1), UiAction::ToggleDebugPanel);
+    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F2), UiAction::ToggleProfileTiming);
+    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_ESCAPE), UiAction::Quit);
+    for (const game::KeyBinding& b : game::key_bindings())
+        for (int k : b.keys)
+            if (k) {
+                EXPECT_FALSE(game::ui_action_for_key(k).has_value()) << "GLFW key " << k;
+            }
+}
+
+using std::chrono::milliseconds;
+using std::chrono::nanoseconds;
+
+// A frame of 1/hz seconds, rounded to whole nanoseconds as a real clock would.
+nanoseconds frame_of(int hz) { return nanoseconds(1'000'000'000 / hz); }
+
+TEST(FixedStepClock, OneTickPerTickOfTime) {
+    game::FixedStepClock clock(60);
+    int ticks = 0;
+    // 1/60 s is not a whole number of nanoseconds: 16666667, 16666667, 16666666 add up.
+    for (int i = 0; i < 600; ++i) ticks += clock.advance(frame_of(60) + nanoseconds(i % 3 < 2 ? 1 : 0));
+    EXPECT_EQ(ticks, 600);
+}
+
+TEST(FixedStepClock, NoDriftOverAnHour) {
+    game::FixedStepClock clock(60);
+    int64_t ticks = 0;
+    for (int i = 0; i < 3600; ++i)
+        for (int j = 0; j < 20; ++j) ticks += clock.advance(milliseconds(50));
+    EXPECT_EQ(ticks, 60 * 3600);
+    EXPECT_EQ(clock.pending(), nanoseconds(0));
+}
+
+TEST(FixedStepClock, FastFramesAccumulate) {
+    game::FixedStepClock clock(60);
+    int ticks = 0, frames_without_tick = 0;
+    for (int i = 0; i < 144 * 10; ++i) {
+        int n = clock.advance(frame_of(144));
+        ticks += n;
+        frames_without_tick += n == 0;
+        EXPECT_LE(n, 1);
+    }
+    EXPECT_NEAR(ticks, 600, 1);
+    EXPECT_GT(frames_without_tick, 0);
+}
+
+TEST(FixedStepClock, SlowFramesAreCappedAndTheRestDropped) {
+    game::FixedStepClock clock(60, 5);
+    EXPECT_EQ(clock.advance(milliseconds(2000)), 5);
+    EXPECT_LT(clock.pending(), frame_of(60));
+    EXPECT_EQ(clock.advance(nanoseconds(0)), 0);
+    // 4.5 ticks of time: 4 now, the half kept for the next frame.
+    game::FixedStepClock c2(100, 5);
+    EXPECT_EQ(c2.advance(milliseconds(45)), 4);
+    EXPECT_EQ(c2.pending(), milliseconds(5));
+    EXPECT_EQ(c2.advance(milliseconds(5)), 1);
+    EXPECT_EQ(c2.pending(), nanoseconds(0));
+    // Exactly the limit is not "behind": nothing is dropped.
+    EXPECT_EQ(c2.advance(milliseconds(57)), 5);
+    EXPECT_EQ(c2.pending(), milliseconds(7));
+}
+
+TEST(FixedStepClock, NegativeTimeAndReset) {
+    game::FixedStepClock clock(100);
+    EXPECT_EQ(clock.advance(milliseconds(-50)), 0);
+    EXPECT_EQ(clock.advance(milliseconds(9)), 0);
+    clock.reset();
+    EXPECT_EQ(clock.pending(), nanoseconds(0));
+    EXPECT_EQ(clock.advance(milliseconds(9)), 0);
+    EXPECT_EQ(clock.advance(milliseconds(1)), 1);
+    EXPECT_THROW(game::FixedStepClock(0), std::invalid_argument);
+}
+
+TEST(Hud, LinesShowStateSpeedAndPasses) {
+    game::HudState hud;
+    hud.speed_kmh = 42.4f;
+    hud.vehicle = sim::Vehicle::Boat;
+    hud.view = sim::ViewMode::Driver;
+    hud.wipers = sim::WiperMode::Intermittent;
+    hud.rain_intensity = 0.5f;
+    hud.tick = 1234;
+    hud.fps = 59.94;
+    hud.passes = {{"shadow", 1.0, 1.25}, {"opaque", 2.0, 2.5}};
+    std::vector<std::string> lines = game::hud_lines(hud);
+    ASSERT_GE(lines.size(), 6u);
+    EXPECT_EQ(lines[0], "42 km/h  boat, driver view");
+    EXPECT_EQ(lines[1], "wipers intermittent  rain 50%");
+    EXPECT_EQ(lines[2], "tick 1234  59.9 fps");
+    EXPECT_NE(lines[3].find("shadow"), std::string::npos);
+    EXPECT_NE(lines[3].find("1.25 ms"), std::string::npos);
+    EXPECT_NE(lines.back().find("total"), std::string::npos);
+    EXPECT_NE(lines.back().find("3.75 ms"), std::string::npos);
+
+    hud.paused = true;
+    hud.recording = true;
+    hud.status = "replay 5/10";
+    lines = game::hud_lines(hud);
+    EXPECT_EQ(lines[0].rfind("PAUSED  REC  replay 5/10", 0), 0u) << lines[0];
+}
+
+TEST(Hud, StateFollowsTheWorld) {
+    sim::LevelDesc level;
+    level.id = "play_test";
+    level.car_spawn = {{0.0f, level.land_height_m, -40.0f}, 0.0f};
+    level.boat_spawn = {{0.0f, 0.0f, 40.0f}, 0.0f};
+    sim::World world(level);
+    game::HudState hud = game::hud_state(world);
+    EXPECT_EQ(hud.tick, 0u);
+    EXPECT_EQ(hud.vehicle, sim::Vehicle::Car);
+    EXPECT_EQ(hud.view, sim::ViewMode::Chase);
+    EXPECT_FLOAT_EQ(hud.speed_kmh, 0.0f);
+
+    const sim::TickInput throttle = keys({GLFW_KEY_W});
+    for (int i = 0; i < 120; ++i) world.step(throttle);
+    // The camera and rain keys act on their press edge.
+    world.step(keys({GLFW_KEY_W, GLFW_KEY_C, GLFW_KEY_R}));
+    hud = game::hud_state(world);
+    EXPECT_EQ(hud.tick, 121u);
+    EXPECT_GT(hud.speed_kmh, 10.0f);
+    EXPECT_EQ(hud.view, sim::ViewMode::Driver);
+    EXPECT_GT(hud.rain_intensity, 0.0f);
+}
+
+TEST(DebugUi, ParamsGroupedInRegistrationOrder) {
+    float f = 0.0f;
+    int i = 0;
+    bool b = false;
+    effects::ParamRegistry registry;
+    registry.add("water", "choppiness", &f, 0.0f, 2.0f);
+    registry.add("rain", "drops", &i, 0, 100);
+    registry.add("water", "foam", &b);
+    std::vector<game::ParamGroup> groups = game::group_params(registry.params());
+    ASSERT_EQ(groups.size(), 2u);
+    EXPECT_EQ(groups[0].name, "water");
+    EXPECT_EQ(groups[0].params, (std::vector<size_t>{0, 2}));
+    EXPECT_EQ(groups[1].name, "rain");
+    EXPECT_EQ(groups[1].params, (std::vector<size_t>{1}));
+    EXPECT_TRUE(game::group_params({}).empty());
+}
+
+TEST(Screenshot, NamedByLocalDateAndTime) {
+    std::tm local{};
+    local.tm_year = 2024 - 1900;
+    local.tm_mon = 2;
+    local.tm_mday = 5;
+    local.tm_hour = 14;
+    local.tm_min = 7;
+    local.tm_sec = 9;
+    local.tm_isdst = -1;
+    auto when = std::chrono::system_clock::from_time_t(std::mktime(&local)) + std::chrono::milliseconds(42);
+    EXPECT_EQ(game::screenshot_path(when), fs::path("screenshots") / "spindrift_20240305-140709-042.png");
+    EXPECT_NE(game::screenshot_path(when), game::screenshot_path(when + std::chrono::milliseconds(1)));
+}
+
+TEST(PlayCommand, DemoReplayArgsRenderEvery30thTick) {
+    auto args = game::demo_replay_args("data/replays/harbour_drive.replay", 95, "spindrift-out/demo");
+    EXPECT_EQ(args, (std::vector<std::string>{"data/replays/harbour_drive.replay", "--headless", "--frames",
+                                              "30,60,90", "--out", "spindrift-out/demo"}));
+    game::FrameSelection frames = game::FrameSelection::parse(args[3]);
+    EXPECT_EQ(frames.ticks, (std::set<uint32_t>{30, 60, 90}));
+    EXPECT_EQ(game::demo_replay_args("r", 12, "o")[3], "12");
+    EXPECT_EQ(game::demo_replay_args("r", 0, "o")[3], "none");
+    EXPECT_EQ(game::demo_replay_args("r", 60, "o")[3], "30,60");
+}
+
+TEST(PlayCommand, WithoutDisplayAMissingDemoReplayIsAClearError) {
+    const fs::path empty = fs::temp_directory_path() / ("spindrift_play_test_" + std::to_string(::getpid()));
+    fs::create_directories(empty);
+    ScopedEnv display("DISPLAY", nullptr), wayland("WAYLAND_DISPLAY", nullptr);
+    ScopedEnv data("SPINDRIFT_DATA", empty.c_str());
+    ASSERT_FALSE(game::display_available());
+    testing::internal::CaptureStderr();
+    int code = game::play_command({});
+    std::string err = testing::internal::GetCapturedStderr();
+    fs::remove_all(empty);
+    EXPECT_EQ(code, game::kExitBadInput);
+    EXPECT_NE(err.find("harbour_drive.replay does not exist"), std::string::npos) << err;
+}

@@ -1,0 +1,180 @@
+// Input scripts: expansion of hold/tap lines to per-tick input, and every error with its line.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <string>
+
+#include "game/replay/InputScript.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using sim::Control;
+
+uint16_t bits(std::initializer_list<Control> controls) {
+    uint16_t mask = 0;
+    for (Control c : controls) mask = uint16_t(mask | uint16_t(c));
+    return mask;
+}
+
+constexpr const char* kHarbourDrive = R"(# drive along the harbour
+level harbour
+frames 640x360
+checkpoints 90 300 600
+
+0    hold throttle
+120  hold throttle steer_left       # from tick 120 hold these controls
+200  tap camera                     # one tick only, on top of the held set
+300  hold                           # hold nothing
+900  end
+)";
+
+TEST(InputScript, ExpandsHoldsAndTapsAtTheirTicks) {
+    const game::InputScript s = game::parse_script(kHarbourDrive, "drive.script");
+    EXPECT_EQ(s.level, "harbour");
+    EXPECT_EQ(s.frame_width, 640u);
+    EXPECT_EQ(s.frame_height, 360u);
+    EXPECT_EQ(s.checkpoints, (std::vector<uint32_t>{90, 300, 600}));
+    EXPECT_EQ(s.end_tick, 900u);
+    ASSERT_EQ(s.inputs.size(), 900u);
+    const uint16_t throttle = bits({Control::Throttle});
+    const uint16_t turning = bits({Control::Throttle, Control::SteerLeft});
+    for (uint32_t t = 0; t < 900; ++t) {
+        uint16_t expected = 0;
+        if (t < 120) expected = throttle;
+        else if (t < 300) expected = turning;
+        if (t == 200) expected = uint16_t(turning | uint16_t(Control::Camera));
+        ASSERT_EQ(s.inputs[t].held, expected) << "tick " << t;
+    }
+}
+
+TEST(InputScript, TapsAddToTheHoldOfTheirTickWhateverTheLineOrder) {
+    const game::InputScript s = game::parse_script(
+        "5 tap fire\n5 tap fire camera\n5 hold brake\n6 tap wipers rain_up\n8 end", "taps.script");
+    EXPECT_TRUE(s.level.empty());
+    EXPECT_EQ(s.frame_width, 480u);
+    EXPECT_EQ(s.frame_height, 270u);
+    EXPECT_TRUE(s.checkpoints.empty());
+    ASSERT_EQ(s.inputs.size(), 8u);
+    for (uint32_t t = 0; t < 5; ++t) EXPECT_EQ(s.inputs[t].held, 0) << t;
+    EXPECT_EQ(s.inputs[5].held, bits({Control::Brake, Control::Fire, Control::Camera}));
+    EXPECT_EQ(s.inputs[6].held, bits({Control::Brake, Control::Wipers, Control::RainUp}));
+    EXPECT_EQ(s.inputs[7].held, bits({Control::Brake}));
+}
+
+TEST(InputScript, AcceptsCommentsBlankLinesAndCrlf) {
+    const game::InputScript s =
+        game::parse_script("\r\n  # only a comment\r\n\t0 hold brake   # trailing\r\n\r\n3 end\r\n\r\n", "crlf.script");
+    ASSERT_EQ(s.inputs.size(), 3u);
+    EXPECT_EQ(s.inputs[2].held, bits({Control::Brake}));
+}
+
+// parse_script must throw "bad.script:LINE: ..." holding every one of `words`.
+void expect_script_error(const std::string& text, int line, std::initializer_list<std::string> words) {
+    SCOPED_TRACE(text);
+    try {
+        game::parse_script(text, "bad.script");
+        ADD_FAILURE() << "no ScriptError thrown";
+    } catch (const game::ScriptError& e) {
+        const std::string message = e.what();
+        const std::string where = "bad.script:" + std::to_string(line) + ": ";
+        EXPECT_EQ(message.rfind(where, 0), 0u) << message << "\ndoes not start with " << where;
+        for (const std::string& w : words) EXPECT_NE(message.find(w), std::string::npos) << message << "\nlacks: " << w;
+    }
+}
+
+TEST(InputScript, NamesTheLineOfEachError) {
+    expect_script_error("0 hold\nspeed 3\n10 end", 2, {"unknown directive 'speed'"});
+    expect_script_error("0 hold throttle nitro\n10 end", 1,
+                        {"unknown control 'nitro'", "throttle", "steer_left", "rain_down"});
+    expect_script_error("0 hold\n120 hold throttle\n100 hold\n900 end", 3,
+                        {"tick 100 is before the previous tick 120: ticks must not go back"});
+    expect_script_error("0 hold\n120 hold\n100 end", 3, {"tick 100 is before the previous tick 120"});
+    expect_script_error("12a hold\n20 end", 1, {"'12a' is not a tick number"});
+    expect_script_error("0 hold\n-5 hold\n20 end", 2, {"tick -5 is negative"});
+    expect_script_error("864001 end", 1, {"tick 864001 is above the limit 864000"});
+    expect_script_error("0 hold\n99999999999999999999999 end", 2, {"above the limit 864000"});
+    expect_script_error("0 hold\n10 press throttle\n20 end", 2, {"unknown action 'press'", "hold, tap or end"});
+    expect_script_error("0 hold\n10\n20 end", 2, {"tick 10 needs an action"});
+    expect_script_error("10 tap\n20 end", 1, {"'tap' needs at least one control"});
+    expect_script_error("0 hold\n5 hold brake\n", 2, {"no 'end' line"});
+    expect_script_error("", 1, {"no 'end' line"});
+    expect_script_error("0 hold\n20 end\n30 hold brake\n", 3, {"'end' must be the last line", "line 2"});
+    expect_script_error("20 end\nlevel harbour\n", 2, {"'end' must be the last line"});
+    expect_script_error("20 end throttle", 1, {"'end' takes no controls"});
+    expect_script_error("0 end", 1, {"at least 1"});
+    expect_script_error("0 hold\n20 hold brake\n20 end", 3, {"ends at tick 20", "never be applied"});
+    expect_script_error("0 hold\n5 hold brake\n5 hold fire\n20 end", 3, {"tick 5 already has a 'hold' on line 2"});
+}
+
+TEST(InputScript, ChecksCheckpointsFramesAndDuplicates) {
+    expect_script_error("checkpoints 10 900\n0 hold\n900 end", 3, {"checkpoint 900 (line 1)", "not before the end tick 900"});
+    expect_script_error("checkpoints 10 50 30\n100 end", 1, {"ascending and unique", "30 follows 50"});
+    expect_script_error("checkpoints 10 10\n100 end", 1, {"ascending and unique"});
+    expect_script_error("checkpoints\n100 end", 1, {"at least one tick"});
+    expect_script_error("checkpoints 10 x\n100 end", 1, {"'x' is not a checkpoint number"});
+    for (const char* bad : {"frames 480", "frames 480x", "frames x270", "frames 8x270", "frames 480x5000",
+                            "frames 480x270x2", "frames 480 270", "frames -480x270", "frames 99999999x270"}) {
+        expect_script_error(std::string("# size\n") + bad + "\n100 end", 2, {"'frames' takes WIDTHxHEIGHT", "16..4096"});
+    }
+    expect_script_error("level harbour\nlevel docks\n100 end", 2, {"duplicate 'level' line", "line 1"});
+    expect_script_error("frames 64x64\n\nframes 64x64\n100 end", 3, {"duplicate 'frames' line", "line 1"});
+    expect_script_error("checkpoints 1\ncheckpoints 2\n100 end", 2, {"duplicate 'checkpoints' line"});
+    expect_script_error("level\n100 end", 1, {"'level' takes exactly one level name"});
+    expect_script_error("level ../etc\n100 end", 1, {"level name '../etc'"});
+    // Limits that are fine.
+    const game::InputScript s = game::parse_script("frames 16x4096\ncheckpoints 0 863999\n864000 end", "max.script");
+    EXPECT_EQ(s.inputs.size(), 864000u);
+    EXPECT_EQ(s.frame_height, 4096u);
+}
+
+class InputScriptFile : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("spindrift_script_test_" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+TEST_F(InputScriptFile, LoadsFromDiskAndRefusesBadFiles) {
+    const fs::path path = dir_ / "drive.script";
+    std::ofstream(path) << kHarbourDrive;
+    const game::InputScript s = game::load_script(path);
+    EXPECT_EQ(s.end_tick, 900u);
+    EXPECT_EQ(s.inputs[200].held, bits({Control::Throttle, Control::SteerLeft, Control::Camera}));
+
+    std::ofstream(dir_ / "broken.script") << "0 hold\n5 hold warp\n10 end\n";
+    try {
+        game::load_script(dir_ / "broken.script");
+        ADD_FAILURE() << "no ScriptError";
+    } catch (const game::ScriptError& e) {
+        EXPECT_NE(std::string(e.what()).find((dir_ / "broken.script").string() + ":2: unknown control 'warp'"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_THROW(game::load_script(dir_ / "missing.script"), game::ScriptError);
+    try {
+        game::load_script(dir_ / "missing.script");
+    } catch (const game::ScriptError& e) {
+        EXPECT_NE(std::string(e.what()).find("missing.script"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(game::load_script(dir_), game::ScriptError);
+    {
+        std::ofstream big(dir_ / "big.script");
+        big << std::string((1u << 20) + 1, '#');
+    }
+    try {
+        game::load_script(dir_ / "big.script");
+        ADD_FAILURE() << "no ScriptError";
+    } catch (const game::ScriptError& e) {
+        EXPECT_NE(std::string(e.what()).find("1 MiB"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace

@@ -1,0 +1,324 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "SimTestLevel.h"
+#include "sim/core/Hash.h"
+#include "sim/core/Rng.h"
+#include "sim/objects/ThrownObjects.h"
+#include "sim/player/CameraRig.h"
+#include "sim/player/Player.h"
+#include "sim/vehicle/Boat.h"
+#include "sim/vehicle/Car.h"
+#include "sim/weapon/Weapon.h"
+#include "sim/world/World.h"
+
+namespace {
+
+using sim::Control;
+using sim::TickInput;
+
+TickInput held(std::initializer_list<Control> controls) {
+    TickInput in;
+    for (Control c : controls) in.set(c, true);
+    return in;
+}
+
+void run(sim::World& w, int ticks, TickInput in) {
+    for (int i = 0; i < ticks; ++i) w.step(in);
+}
+
+// Presses a control for one tick, then releases it for one tick.
+void tap(sim::World& w, Control c, TickInput base = {}) {
+    TickInput in = base;
+    in.set(c, true);
+    w.step(in);
+    w.step(base);
+}
+
+TEST(Rng, MatchesPcg32ReferenceSequence) {
+    // pcg32_srandom(42, 54) from the PCG reference implementation.
+    sim::Rng rng(42u, 54u);
+    const uint32_t expected[] = {0xa15c02b7, 0x7b47f409, 0xba1d3330, 0x83d2f293, 0xbfa4784b, 0xcbed606e};
+    for (uint32_t e : expected) EXPECT_EQ(rng.next_u32(), e);
+}
+
+TEST(Rng, RangesStayInBounds) {
+    sim::Rng rng(1);
+    for (int i = 0; i < 10000; ++i) {
+        float u = rng.unit();
+        ASSERT_GE(u, 0.0f);
+        ASSERT_LT(u, 1.0f);
+        ASSERT_LT(rng.below(7), 7u);
+        float r = rng.range(-2.0f, 3.0f);
+        ASSERT_GE(r, -2.0f);
+        ASSERT_LT(r, 3.0f);
+    }
+}
+
+TEST(Hash, SeesEveryBitOfAFloat) {
+    sim::Hasher a, b;
+    a.f32(1.0f);
+    b.f32(std::nextafter(1.0f, 2.0f));
+    EXPECT_NE(a.value(), b.value());
+    sim::Hasher c, d;
+    c.f32(0.0f);
+    d.f32(-0.0f);
+    EXPECT_NE(c.value(), d.value());
+}
+
+TEST(World, NamesItsSubsystemsInStepOrder) {
+    sim::World w(make_test_level());
+    std::vector<std::string> expected = {"player", "car", "boat", "weapon", "objects", "camera"};
+    EXPECT_EQ(w.subsystem_names(), expected);
+    EXPECT_EQ(w.hash().parts.size(), expected.size());
+}
+
+TEST(Car, AcceleratesForwardAndStopsWithoutReversing) {
+    sim::World w(make_test_level());
+    run(w, 300, held({Control::Throttle}));
+    const sim::Car& car = w.get<sim::Car>();
+    EXPECT_GT(car.speed_mps(), 12.0f);
+    EXPECT_GT(car.position().x, 25.0f);                // heading 0 drives towards +x
+    EXPECT_NEAR(car.position().z, -12.0f, 0.5f);       // straight
+    EXPECT_NEAR(car.position().y, 1.0f, 1e-4f);        // on the ground
+    int ticks = 0;
+    while (car.speed_mps() > 0.0f && ticks < 600) {
+        w.step(held({Control::Brake}));
+        ++ticks;
+    }
+    EXPECT_LT(ticks, 240);  // about 1 g of braking from ~70 km/h
+    EXPECT_GE(car.speed_mps(), 0.0f);  // braking never pushes it backwards
+    float x_stopped = car.position().x;
+    run(w, 60, TickInput{});
+    EXPECT_NEAR(car.position().x, x_stopped, 0.05f);  // and it doesn't creep
+    run(w, 300, held({Control::Brake}));  // holding brake at rest reverses, slowly
+    EXPECT_LT(car.speed_mps(), -3.0f);
+    EXPECT_GT(car.speed_mps(), -5.2f);
+}
+
+TEST(Car, SteersLeftAndRight) {
+    sim::World left(make_test_level()), right(make_test_level());
+    run(left, 200, held({Control::Throttle, Control::SteerLeft}));
+    run(right, 200, held({Control::Throttle, Control::SteerRight}));
+    EXPECT_GT(left.get<sim::Car>().pose().heading_rad, 0.5f);
+    EXPECT_LT(right.get<sim::Car>().pose().heading_rad, -0.5f);
+    // Heading positive turns towards -z.
+    EXPECT_LT(left.get<sim::Car>().position().z, -12.0f);
+}
+
+TEST(Car, GripsLessOffRoad) {
+    // The same hard turn at speed drifts wider on grass than on the road.
+    sim::LevelDesc on = make_test_level();
+    sim::LevelDesc off = make_test_level();
+    off.roads.clear();
+    sim::World a(on), b(off);
+    run(a, 240, held({Control::Throttle}));
+    run(b, 240, held({Control::Throttle}));
+    run(a, 90, held({Control::Throttle, Control::SteerLeft}));
+    run(b, 90, held({Control::Throttle, Control::SteerLeft}));
+    EXPECT_GT(a.get<sim::Car>().pose().heading_rad, b.get<sim::Car>().pose().heading_rad);
+}
+
+TEST(Car, StaysOutOfTheSea) {
+    sim::LevelDesc l = make_test_level();
+    l.car_spawn = {{0.0f, 1.0f, -10.0f}, -1.5707963f};  // facing +z, the sea
+    sim::World w(l);
+    run(w, 600, held({Control::Throttle}));
+    EXPECT_LT(w.get<sim::Car>().position().z, 0.0f);
+    EXPECT_GE(w.get<sim::Car>().position().y, 0.9f);
+}
+
+TEST(Car, DrivesOntoTheDeck) {
+    sim::LevelDesc l = make_test_level();
+    l.car_spawn = {{24.0f, 1.0f, -10.0f}, -1.5707963f};  // facing +z along the pier
+    sim::World w(l);
+    run(w, 240, held({Control::Throttle}));
+    glm::vec3 p = w.get<sim::Car>().position();
+    EXPECT_GT(p.z, 5.0f);  // out over the water
+    EXPECT_NEAR(p.y, 1.0f, 1e-3f);
+}
+
+TEST(Car, StopsAtAWall) {
+    sim::World w(make_test_level());
+    run(w, 900, held({Control::Throttle}));
+    EXPECT_LT(w.get<sim::Car>().position().x, 150.0f);  // the front circle keeps it out of the wall at x = 150
+    EXPECT_GT(w.get<sim::Car>().position().x, 140.0f);
+}
+
+TEST(Boat, FloatsAtItsWaterlineAtRest) {
+    sim::World w(make_test_level());
+    run(w, 600, TickInput{});
+    const sim::Boat& b = w.get<sim::Boat>();
+    EXPECT_NEAR(b.position().y, 0.0f, 0.01f);
+    EXPECT_NEAR(b.pose().pitch_rad, 0.0f, 0.01f);
+    EXPECT_NEAR(b.pose().roll_rad, 0.0f, 0.01f);
+}
+
+TEST(Player, SwitchesToTheBoatOnlyWhenClose) {
+    sim::LevelDesc l = make_test_level();
+    sim::World far(l);
+    tap(far, Control::SwitchVehicle);
+    EXPECT_EQ(far.get<sim::Player>().vehicle(), sim::Vehicle::Car);
+    l.car_spawn.position = {36.0f, 1.0f, 30.0f};  // pretend the car is at the pier by the boat
+    sim::World near(l);
+    tap(near, Control::SwitchVehicle);
+    EXPECT_EQ(near.get<sim::Player>().vehicle(), sim::Vehicle::Boat);
+    run(near, 300, held({Control::Throttle}));
+    EXPECT_GT(near.get<sim::Boat>().speed_mps(), 4.0f);
+    EXPECT_GT(near.get<sim::Boat>().position().z, 35.0f);  // the boat faces +z
+    EXPECT_NEAR(near.get<sim::Car>().position().x, 36.0f, 0.01f);  // the car stays parked
+}
+
+TEST(Player, CyclesCameraWipersAndRain) {
+    sim::World w(make_test_level());
+    tap(w, Control::Camera);
+    EXPECT_EQ(w.get<sim::Player>().view(), sim::ViewMode::Driver);
+    for (int i = 0; i < 3; ++i) tap(w, Control::Wipers);
+    EXPECT_EQ(w.get<sim::Player>().wipers(), sim::WiperMode::High);
+    tap(w, Control::Wipers);
+    EXPECT_EQ(w.get<sim::Player>().wipers(), sim::WiperMode::Off);
+    for (int i = 0; i < 6; ++i) tap(w, Control::RainUp);
+    EXPECT_FLOAT_EQ(w.get<sim::Player>().rain_intensity(), 1.0f);
+    tap(w, Control::RainDown);
+    EXPECT_FLOAT_EQ(w.get<sim::Player>().rain_intensity(), 0.75f);
+    // Holding a key acts once.
+    sim::World h(make_test_level());
+    run(h, 30, held({Control::Camera}));
+    EXPECT_EQ(h.get<sim::Player>().view(), sim::ViewMode::Driver);
+}
+
+TEST(ThrownObjects, SubmergedVolumeOfASphere) {
+    const float r = 0.5f, full = 4.0f / 3.0f * 3.14159265f * r * r * r;
+    EXPECT_FLOAT_EQ(sim::submerged_sphere_volume(r, -1.0f), 0.0f);
+    EXPECT_NEAR(sim::submerged_sphere_volume(r, 0.0f), full / 2, 1e-5f);
+    EXPECT_NEAR(sim::submerged_sphere_volume(r, 2.0f), full, 1e-5f);
+}
+
+sim::World& world_with_object(sim::World& w, const sim::ThrowKind& kind) {
+    // Dropped from above the sea beside the pier.
+    w.get<sim::ThrownObjects>().launch(kind, {40.0f, 4.0f, 10.0f}, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f});
+    return w;
+}
+
+TEST(ThrownObjects, HeavySinksToTheBottomLightFloats) {
+    sim::World heavy(make_test_level()), light(make_test_level());
+    world_with_object(heavy, sim::ThrownObjects::kHeavy);
+    world_with_object(light, sim::ThrownObjects::kLight);
+    int heavy_entries = 0, light_entries = 0;
+    for (int i = 0; i < 900; ++i) {
+        heavy.step({});
+        light.step({});
+        heavy_entries += int(heavy.events().water_entries.size());
+        light_entries += int(light.events().water_entries.size());
+    }
+    EXPECT_EQ(heavy_entries, 1);
+    EXPECT_EQ(light_entries, 1);
+    const sim::ThrownObject& h = heavy.get<sim::ThrownObjects>().objects().at(0);
+    const sim::ThrownObject& l = light.get<sim::ThrownObjects>().objects().at(0);
+    EXPECT_NEAR(h.position.y, -6.0f + h.radius_m, 0.02f);  // resting on the sea bed
+    // A float of density 240 rides with about a quarter of its volume under water:
+    // its centre sits above the surface, less than its radius.
+    EXPECT_GT(l.position.y, 0.0f);
+    EXPECT_LT(l.position.y, l.radius_m);
+    EXPECT_LT(std::fabs(l.velocity.y), 0.05f);
+}
+
+TEST(ThrownObjects, ThrowKeysLaunchFromTheVehicle) {
+    sim::World w(make_test_level());
+    tap(w, Control::ThrowHeavy);
+    tap(w, Control::ThrowLight);
+    const auto& objs = w.get<sim::ThrownObjects>().objects();
+    ASSERT_EQ(objs.size(), 2u);
+    EXPECT_TRUE(objs[0].sinks());
+    EXPECT_FALSE(objs[1].sinks());
+    EXPECT_GT(objs[0].velocity.x, 5.0f);  // thrown forward (+x)
+    for (int i = 0; i < 40; ++i) tap(w, Control::ThrowHeavy);
+    EXPECT_EQ(w.get<sim::ThrownObjects>().objects().size(), sim::ThrownObjects::kMaxObjects);
+}
+
+TEST(Weapon, ShotGrowsIntoABeamAndFades) {
+    sim::World w(make_test_level());
+    tap(w, Control::Fire);
+    const auto& shots = w.get<sim::Weapon>().shots();
+    ASSERT_EQ(shots.size(), 1u);
+    float early = 0.0f;
+    for (const auto& s : shots[0].segments) early += s.length_m;
+    run(w, 40, TickInput{});
+    float later = 0.0f;
+    for (const auto& s : w.get<sim::Weapon>().shots()[0].segments) later += s.length_m;
+    EXPECT_GT(later, early + 5.0f);
+    for (const auto& s : w.get<sim::Weapon>().shots()[0].segments) {
+        EXPECT_NEAR(glm::length(s.direction), 1.0f, 1e-4f);
+        EXPECT_GT(s.beam_strength, 0.0f);
+    }
+    run(w, 200, TickInput{});
+    EXPECT_TRUE(w.get<sim::Weapon>().shots().empty());
+}
+
+TEST(CameraRig, ChaseCameraFollowsBehindAndDriverViewSitsInTheCar) {
+    sim::World w(make_test_level());
+    run(w, 240, held({Control::Throttle}));
+    const sim::CameraView& v = w.get<sim::CameraRig>().view();
+    glm::vec3 car = w.get<sim::Car>().position();
+    EXPECT_LT(v.eye.x, car.x - 4.0f);  // behind
+    EXPECT_GT(v.eye.y, car.y + 1.0f);  // above
+    tap(w, Control::Camera, held({Control::Throttle}));
+    const sim::CameraView& d = w.get<sim::CameraRig>().view();
+    EXPECT_LT(glm::length(d.eye - w.get<sim::Car>().position()), 2.0f);
+    EXPECT_GT(d.target.x, d.eye.x);  // looking forward
+}
+
+// A busy session: driving, turning, throwing, firing.
+TickInput busy_input(uint32_t t) {
+    TickInput in;
+    in.set(Control::Throttle, (t / 200) % 3 != 2);
+    in.set(Control::Brake, (t / 200) % 3 == 2);
+    in.set((t / 130) % 2 ? Control::SteerLeft : Control::SteerRight, t % 130 < 50);
+    in.set(Control::ThrowHeavy, t % 37 == 3);
+    in.set(Control::ThrowLight, t % 41 == 7);
+    in.set(Control::Fire, t % 97 == 11);
+    return in;
+}
+
+std::vector<sim::WorldHash> hashes(int threads, uint32_t ticks) {
+    sim::World w(make_test_level(), {threads});
+    std::vector<sim::WorldHash> out;
+    for (uint32_t t = 0; t < ticks; ++t) {
+        w.step(busy_input(t));
+        out.push_back(w.hash());
+    }
+    return out;
+}
+
+TEST(Determinism, SameInputsSameHashes) { EXPECT_EQ(hashes(1, 900), hashes(1, 900)); }
+
+TEST(Determinism, SameHashesForAnyThreadCount) {
+    auto one = hashes(1, 900);
+    EXPECT_EQ(one, hashes(2, 900));
+    EXPECT_EQ(one, hashes(3, 900));
+}
+
+TEST(Determinism, DifferentInputsDifferentHashes) {
+    sim::World a(make_test_level()), b(make_test_level());
+    a.step(held({Control::Throttle}));
+    b.step(held({Control::Brake}));
+    a.step({});
+    b.step({});
+    EXPECT_NE(a.hash().world, b.hash().world);
+    EXPECT_NE(a.hash().parts[1], b.hash().parts[1]);  // the car moved differently
+}
+
+TEST(JobPool, RejectsAbsurdThreadCounts) {
+    EXPECT_THROW(sim::JobPool(0), std::invalid_argument);
+    EXPECT_THROW(sim::JobPool(1000), std::invalid_argument);
+}
+
+TEST(TickInput, QuantiseDropsUnknownBits) {
+    TickInput in{0xffff};
+    EXPECT_EQ(sim::quantise(in).held, sim::kAllControls);
+    EXPECT_EQ(sim::control_from_name("fire"), Control::Fire);
+    EXPECT_FALSE(sim::control_from_name("jump").has_value());
+}
+
+}  // namespace
