@@ -10,7 +10,7 @@
 namespace effects {
 
 struct RendererOptions {
-    int shadow_map_size = 2048;
+    int shadow_map_size = 1024;
     int environment_size = 64;
     gl::TimingMode timing = gl::TimingMode::GpuQueries;
 };

@@ -270,6 +270,9 @@ TEST(LevelLoader, OutOfRangeAndMalformedValues) {
     expect_error([&] { game::load_level((tmp.path / "inf1.json").string()); }, {"inf1.json: invalid JSON", "overflow"});
     spit(tmp.path / "inf2.json", huge_float);
     expect_error([&] { game::load_level((tmp.path / "inf2.json").string()); }, {"world.land_height_m: is not a finite number"});
+    // Absurd nesting is refused before anything walks it recursively.
+    spit(tmp.path / "deep.json", "{\"format\": " + std::string(200000, '[') + std::string(200000, ']') + "}");
+    expect_error([&] { game::load_level((tmp.path / "deep.json").string()); }, {"deep.json: invalid JSON: nested deeper than 64"});
     // Not an object at all, and an oversized file.
     spit(tmp.path / "array.json", "[1, 2, 3]");
     expect_error([&] { game::load_level((tmp.path / "array.json").string()); }, {"array.json: expected an object"});
@@ -378,6 +381,18 @@ struct GltfDoc {
     }
 };
 
+// The same document as a .glb: a JSON chunk and a BIN chunk holding the buffer.
+std::string glb(const GltfDoc& d) {
+    json j = d.j;
+    j["buffers"] = {{{"byteLength", d.bin.size()}}};
+    std::string text = j.dump(), bin = d.bin;
+    while (text.size() % 4) text.push_back(' ');
+    while (bin.size() % 4) bin.push_back('\0');
+    auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    return "glTF" + u32(2) + u32(uint32_t(12 + 8 + text.size() + 8 + bin.size())) + u32(uint32_t(text.size())) +
+           "JSON" + text + u32(uint32_t(bin.size())) + std::string("BIN\0", 4) + bin;
+}
+
 effects::Model load_doc(const TempDir& tmp, const GltfDoc& doc, const char* name = "model.gltf") {
     spit(tmp.path / name, doc.text());
     return game::load_gltf_model(tmp.path / name);
@@ -434,6 +449,24 @@ TEST(GltfModel, ComputesNormalsAndKeepsMirroredWindingOutward) {
                              mv.vertices[mv.indices[2]].position - mv.vertices[mv.indices[0]].position);
     EXPECT_GT(glm::dot(g, mv.vertices[0].normal), 0.0f);
     EXPECT_NEAR(glm::length(mv.vertices[0].normal - glm::vec3(0, -1, 0)), 0.0f, 1e-6f);
+}
+
+TEST(GltfModel, ReadsBinaryGltf) {
+    TempDir tmp("glb");
+    GltfDoc d;
+    int pos = d.triangle_positions();
+    d.j["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", pos}}}}}}});
+    d.j["nodes"].push_back({{"name", "tri"}, {"mesh", 0}, {"translation", {0, 2, 0}}});
+    spit(tmp.path / "tri.glb", glb(d));
+    effects::Model m = game::load_gltf_model(tmp.path / "tri.glb");
+    ASSERT_EQ(m.meshes.size(), 1u);
+    EXPECT_EQ(m.meshes[0].name, "tri");
+    EXPECT_NEAR(m.bounds_min.y, 2.0f, 1e-6f);
+    EXPECT_NEAR(m.bounds_max.x, 1.0f, 1e-6f);
+    // Cut inside the BIN chunk.
+    std::string bytes = glb(d);
+    spit(tmp.path / "cut.glb", bytes.substr(0, bytes.size() - 10));
+    expect_error([&] { game::load_gltf_model(tmp.path / "cut.glb"); }, {"cut.glb: invalid glTF"});
 }
 
 TEST(GltfModel, VertexColoursTimesMaterial) {
@@ -515,6 +548,21 @@ TEST(GltfModel, MalformedFilesAreRefused) {
         expect_error([&] { game::load_gltf_model(tmp.path / name); }, words);
     }
     expect_error([&] { game::load_gltf_model(tmp.path / "absent.gltf"); }, {"absent.gltf: not found"});
+    // tinygltf walks "extras" recursively: deep nesting must not reach it.
+    GltfDoc deep;
+    deep.triangle_positions();
+    deep.j["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}});
+    deep.j["nodes"].push_back({{"mesh", 0}, {"extras", 0}});
+    std::string text = deep.text();
+    size_t at = text.find("\"extras\": 0");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 11, "\"extras\": " + std::string(100000, '[') + std::string(100000, ']'));
+    spit(tmp.path / "deep.gltf", text);
+    expect_error([&] { game::load_gltf_model(tmp.path / "deep.gltf"); }, {"deep.gltf: invalid glTF: JSON nested deeper than 64"});
+    // The same file with modest nesting loads.
+    text.replace(at + 10, 200000, "[[{\"a\": \"]]]]\"}]]");
+    spit(tmp.path / "extras.gltf", text);
+    EXPECT_EQ(game::load_gltf_model(tmp.path / "extras.gltf").meshes.size(), 1u);
     // A .glb header that promises more than it holds.
     spit(tmp.path / "short.glb", std::string("glTF\x02\0\0\0\xff\xff\0\0", 12));
     expect_error([&] { game::load_gltf_model(tmp.path / "short.glb"); }, {"short.glb: invalid glTF"});

@@ -187,7 +187,8 @@ TEST_F(ReplayFile, RoundTripsAHeaderAtEveryLimit) {
     EXPECT_EQ(r.header, h);
     EXPECT_EQ(r.inputs.size(), 70u);
     expect_tick_hashes(r, 32);
-    EXPECT_EQ(read_bytes(path).size(), game::kMaxHeaderBytes + chunk_record_size(60, 32) + chunk_record_size(10, 32) + 16);
+    EXPECT_EQ(read_bytes(path).size(),
+              game::kMaxHeaderBytes + chunk_record_size(60, 32) + chunk_record_size(10, 32) + 16);
     EXPECT_EQ(header_size(read_bytes(path)), game::kMaxHeaderBytes);
 }
 
@@ -625,7 +626,8 @@ TEST_F(ReplayCheck, ReportsEveryKindOfRecordedHashThatDisagrees) {
     d.tick_fingerprints[44 * parts + 3] ^= 1;
     d.tick_fingerprints[44 * parts + 1] ^= 1;
     expect_divergence(d, 45, "matches the recording but the recorded subsystem fingerprints do not; subsystem '" +
-                                 r.header.subsystem_names[1] + "' differs first (then: " + r.header.subsystem_names[3] + ")");
+                                 r.header.subsystem_names[1] + "' differs first (then: " +
+                                 r.header.subsystem_names[3] + ")");
 }
 
 }  // namespace

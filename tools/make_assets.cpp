@@ -341,23 +341,29 @@ Asset boat() {
     auto keel = [](float x) { float t = std::clamp((x - 0.5f) / 2.5f, 0.0f, 1.0f); return -0.5f + 0.55f * t * t; };
     auto sheer = [](float x) { float t = std::clamp((x + 0.5f) / 3.5f, 0.0f, 1.0f); return 0.6f + 0.18f * t * t; };
     const float boot = 0.12f;  // waterline stripe: white topsides above, navy bottom below
-    auto station = [](float u) { return -3.0f + 6.0f * u; };
+    auto station = [](float u) { return -3.0f + 6.0f * std::sin(u * kPi / 2.0f); };  // denser at the bow
     auto bottom_at = [&](float x, float v) {  // half ellipse from port boot (v=0) over the keel to starboard
         float phi = (2.0f * v - 1.0f) * kPi / 2.0f;
         return vec3(x, boot + (keel(x) - boot) * std::cos(phi), half_beam(x) * std::sin(phi));
     };
     for (float side : {-1.0f, 1.0f})
         surface(a.part(side < 0 ? "hull_port" : "hull_starboard", mat::hull_white),
-                [&](float u, float v) { float x = station(u); return vec3(x, boot + (sheer(x) - boot) * v, side * half_beam(x)); },
-                16, 1, flat());
-    surface(a.part("hull_bottom", mat::hull_navy), [&](float u, float v) { return bottom_at(station(u), v); }, 16, 8, flat());
-    std::vector<vec3> transom = {{-3.0f, sheer(-3.0f), -half_beam(-3.0f)}};
+                [&](float u, float v) {  // topsides flare out a little towards the sheer
+                    float x = station(u);
+                    return vec3(x, boot + (sheer(x) - boot) * v, side * half_beam(x) * (1.0f + 0.08f * v));
+                },
+                20, 1, flat());
+    surface(a.part("hull_bottom", mat::hull_navy), [&](float u, float v) { return bottom_at(station(u), v); }, 20, 8, flat());
+    std::vector<vec3> transom = {{-3.0f, sheer(-3.0f), -half_beam(-3.0f) * 1.08f}};
     for (int j = 0; j <= 8; ++j) transom.push_back(bottom_at(-3.0f, float(j) / 8.0f));
-    transom.emplace_back(-3.0f, sheer(-3.0f), half_beam(-3.0f));
+    transom.emplace_back(-3.0f, sheer(-3.0f), half_beam(-3.0f) * 1.08f);
     poly(a.part("transom", mat::hull_white), {}, transom, {-1, 0, 0}, flat());
     surface(a.part("deck", mat::teak),
-            [&](float u, float v) { float x = station(u); return vec3(x, sheer(x) - 0.05f, (2.0f * v - 1.0f) * std::max(half_beam(x) - 0.03f, 0.0f)); },
-            16, 1, flat());
+            [&](float u, float v) {
+                float x = station(u);
+                return vec3(x, sheer(x) - 0.05f, (2.0f * v - 1.0f) * std::max(half_beam(x) * 1.08f - 0.03f, 0.0f));
+            },
+            20, 1, flat());
     const std::vector<vec2> cabin = {{-1.7f, 0.5f}, {0.35f, 0.5f}, {0.05f, 1.35f}, {-1.6f, 1.4f}};
     prism(a.part("cabin", mat::hull_white), {}, cabin, -0.75f, 0.75f, flat());
     Part& win = a.part("windows", mat::glass);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 
 #include "effects/scene/TerrainMesh.h"
 #include "sim/objects/ThrownObjects.h"
@@ -37,33 +38,38 @@ void SceneGeometry::apply_ground(const gl::Program& p) const {
 }
 
 void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool depth_only) const {
+    // The normal matrix once per draw on the CPU, not per vertex on the GPU.
+    auto place = [&](const glm::mat4& model) {
+        p.set("u_model", model);
+        if (!depth_only) p.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model))));
+    };
     auto material = [&](int surface, glm::vec4 tint) {
         if (depth_only) return;
         p.set("u_surface", surface);
         p.set("u_tint", tint);
     };
     material(1, glm::vec4(1.0f));
-    p.set("u_model", glm::mat4(1.0f));
+    place(glm::mat4(1.0f));
     terrain_.draw(p, depth_only);
 
     material(0, glm::vec4(1.0f));
     for (const PropInstance& inst : desc_.props) {
-        p.set("u_model", inst.transform);
+        place(inst.transform);
         models_[size_t(inst.model)]->draw(p, depth_only);
     }
     if (desc_.car_model >= 0) {
-        p.set("u_model", world.get<sim::Car>().pose().matrix());
+        place(world.get<sim::Car>().pose().matrix());
         models_[size_t(desc_.car_model)]->draw(p, depth_only);
     }
     if (desc_.boat_model >= 0) {
-        p.set("u_model", world.get<sim::Boat>().pose().matrix());
+        place(world.get<sim::Boat>().pose().matrix());
         models_[size_t(desc_.boat_model)]->draw(p, depth_only);
     }
     for (const sim::ThrownObject& o : world.get<sim::ThrownObjects>().objects()) {
         // Stones grey, floats bright orange so they read on the water.
         material(0, o.sinks() ? glm::vec4(0.18f, 0.18f, 0.17f, 1.0f) : glm::vec4(0.9f, 0.28f, 0.04f, 1.0f));
         glm::mat4 m = glm::translate(glm::mat4(1.0f), o.position) * glm::scale(glm::mat4(1.0f), glm::vec3(o.radius_m));
-        p.set("u_model", m);
+        place(m);
         sphere_.draw(p, depth_only);
     }
 }

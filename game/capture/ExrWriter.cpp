@@ -1,4 +1,5 @@
 #include "game/capture/ExrWriter.h"
+#include "game/capture/CaptureError.h"
 
 #include "game/capture/ImageFiles.h"
 
@@ -81,7 +82,7 @@ void write_exr(const std::filesystem::path& path, int width, int height,
     if (path.has_parent_path()) {
         std::filesystem::create_directories(path.parent_path(), error);
         if (error)
-            throw std::runtime_error(where + ": cannot create directory " +
+            throw CaptureError(where + ": cannot create directory " +
                                      quoted(path.parent_path()) + ": " + error.message());
     }
 
@@ -112,7 +113,7 @@ void write_exr(const std::filesystem::path& path, int width, int height,
         file.writePixels(height);
     } catch (const std::exception& e) {
         std::filesystem::remove(temporary, error);
-        throw std::runtime_error(where + ": " + e.what());
+        throw CaptureError(where + ": " + e.what());
     }
     replace_with(temporary, path);
 }

@@ -1,4 +1,5 @@
 #include "game/capture/ImageFiles.h"
+#include "game/capture/CaptureError.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -54,7 +55,7 @@ void replace_with(const std::filesystem::path& temporary, const std::filesystem:
     std::filesystem::rename(temporary, path, error);
     if (error) {
         std::filesystem::remove(temporary, error);
-        throw std::runtime_error("cannot write " + quoted(path) + ": rename failed: " + error.message());
+        throw CaptureError("cannot write " + quoted(path) + ": rename failed: " + error.message());
     }
 }
 
@@ -64,7 +65,7 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
     if (path.has_parent_path()) {
         std::filesystem::create_directories(path.parent_path(), error);
         if (error)
-            throw std::runtime_error("cannot write " + quoted(path) + ": cannot create directory " +
+            throw CaptureError("cannot write " + quoted(path) + ": cannot create directory " +
                                      quoted(path.parent_path()) + ": " + error.message());
     }
 
@@ -72,7 +73,7 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
     auto fail = [&](const std::string& why) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
-        throw std::runtime_error("cannot write " + quoted(path) + ": " + why);
+        throw CaptureError("cannot write " + quoted(path) + ": " + why);
     };
 
     // "png" names the format: the temporary's name has no .png extension.
@@ -95,23 +96,23 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
 ImageRGBA8 read_png(const std::filesystem::path& path) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
-        throw std::runtime_error("cannot read image " + quoted(path) +
+        throw CaptureError("cannot read image " + quoted(path) +
                                  (std::filesystem::exists(path, error) ? ": not a regular file"
                                                                        : ": no such file"));
 
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);  // keep straight alpha as stored
     auto in = OIIO::ImageInput::open(path.string(), &config);
-    if (!in) throw std::runtime_error("cannot read image " + quoted(path) + ": " + OIIO::geterror());
+    if (!in) throw CaptureError("cannot read image " + quoted(path) + ": " + OIIO::geterror());
 
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide ||
         spec.height > kMaxImageSide || spec.depth > 1)
-        throw std::runtime_error("cannot read image " + quoted(path) + ": size " +
+        throw CaptureError("cannot read image " + quoted(path) + ": size " +
                                  std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                                  " outside 1.." + std::to_string(kMaxImageSide));
     if (spec.nchannels < 1 || spec.deep)
-        throw std::runtime_error("cannot read image " + quoted(path) + ": " +
+        throw CaptureError("cannot read image " + quoted(path) + ": " +
                                  std::to_string(spec.nchannels) + " channels" +
                                  (spec.deep ? " (deep image)" : ""));
 
@@ -119,7 +120,7 @@ ImageRGBA8 read_png(const std::filesystem::path& path) {
     const std::size_t pixel_count = std::size_t(spec.width) * std::size_t(spec.height);
     std::vector<std::uint8_t> stored(pixel_count * std::size_t(channels));
     if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, stored.data()))
-        throw std::runtime_error("cannot read image " + quoted(path) + ": " + in->geterror());
+        throw CaptureError("cannot read image " + quoted(path) + ": " + in->geterror());
     in->close();
 
     ImageRGBA8 image{spec.width, spec.height, std::vector<std::uint8_t>(pixel_count * 4)};

@@ -39,13 +39,20 @@ int record_command(const std::vector<std::string>& argv) {
 
     ReplayWriter writer = ReplayWriter::create(*out, header);
     Progress progress("record " + std::filesystem::path(*out).filename().string(), script.inputs.size(), "ticks");
-    for (const sim::TickInput& in : script.inputs) {
-        sim::TickInput q = sim::quantise(in);
-        session.world->step(q);
-        writer.append(q, session.world->hash());
-        progress.update(size_t(session.world->tick()));
+    try {
+        for (const sim::TickInput& in : script.inputs) {
+            sim::TickInput q = sim::quantise(in);
+            session.world->step(q);
+            writer.append(q, session.world->hash());
+            progress.update(size_t(session.world->tick()));
+        }
+        writer.finish();
+    } catch (...) {
+        // A recording that failed is not left behind to be mistaken for a cut one.
+        std::error_code ec;
+        std::filesystem::remove(*out, ec);
+        throw;
     }
-    writer.finish();
     progress.finish();
     std::cout << "recorded " << writer.ticks() << " ticks of level '" << header.level_id << "' to " << *out << "\n";
     return kExitOk;

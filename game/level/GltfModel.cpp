@@ -44,6 +44,25 @@ std::string read_level_file(const fs::path& file, uint64_t max_bytes) {
     return bytes;
 }
 
+size_t json_nesting_depth(std::string_view text) {
+    size_t depth = 0, deepest = 0;
+    bool in_string = false, escaped = false;
+    for (char c : text) {
+        if (in_string) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
 namespace {
 
 void hash_blob(sim::Hasher* content, const void* data, size_t n) {
@@ -87,6 +106,17 @@ std::string trim(std::string s) {
 }
 
 tinygltf::Model parse_gltf(const std::string& bytes, const fs::path& file, sim::Hasher* content) {
+    // The JSON part: all of a .gltf, or a .glb's first chunk (its header says how long).
+    std::string_view json_text = bytes;
+    bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    if (binary) {
+        uint32_t chunk = 0;
+        if (bytes.size() >= 20) std::memcpy(&chunk, bytes.data() + 12, 4);
+        json_text = std::string_view(bytes).substr(std::min<size_t>(20, bytes.size()), chunk);
+    }
+    if (json_nesting_depth(json_text) > kMaxJsonNesting)
+        throw LevelError(file.string() + ": invalid glTF: JSON nested deeper than " + std::to_string(kMaxJsonNesting) +
+                         " levels");
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&file_exists, &keep_path, &read_external, &refuse_write, content});
     loader.SetImageLoader(&skip_image, nullptr);
@@ -94,7 +124,7 @@ tinygltf::Model parse_gltf(const std::string& bytes, const fs::path& file, sim::
     std::string err, warn, base = file.parent_path().string();
     bool ok = false;
     try {
-        if (bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0)
+        if (binary)
             ok = loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                              unsigned(bytes.size()), base);
         else

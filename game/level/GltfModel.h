@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "effects/scene/SceneDesc.h"
 #include "game/level/LevelError.h"
@@ -30,5 +31,11 @@ effects::Model load_gltf_model(const std::filesystem::path& file, sim::Hasher* c
 
 // Reads a whole file of at most max_bytes; throws LevelError naming it otherwise.
 std::string read_level_file(const std::filesystem::path& file, uint64_t max_bytes);
+
+// Deepest nesting of [ and { in a JSON text (outside strings). JSON code that walks
+// values recursively (tinygltf's extras, dump()) would overflow the stack on absurd
+// depths, so level files and glTF are refused beyond kMaxJsonNesting.
+inline constexpr size_t kMaxJsonNesting = 64;
+size_t json_nesting_depth(std::string_view text);
 
 }  // namespace game

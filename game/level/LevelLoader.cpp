@@ -128,7 +128,8 @@ public:
         r_.object(doc_, "", {"format", "id", "seed", "world", "roads", "sun", "rain", "car", "boat", "tank_spot", "props"});
         const json& format = r_.required(doc_, "", "format");
         if (!format.is_number_unsigned() || format.get<uint64_t>() != 1)
-            r_.fail("format", "unsupported format " + format.dump() + " (this build reads format 1)");
+            r_.fail("format", "unsupported format " + (format.is_primitive() ? format.dump() : std::string(format.type_name())) +
+                                  " (this build reads format 1)");
         level.id = r_.string(r_.required(doc_, "", "id"), "id");
         if (level.id.empty() || level.id.size() > 64) r_.fail("id", "must have 1 to 64 characters");
         if (const json* seed = LevelReader::optional(doc_, "seed")) {
@@ -274,6 +275,9 @@ LoadedLevel load_level(std::string_view name_or_path) {
         throw LevelError("no level named '" + std::string(name_or_path) + "' (looked for " + out.path.string() + ")");
     }
     std::string text = read_level_file(out.path, kMaxLevelJsonBytes);
+    if (json_nesting_depth(text) > kMaxJsonNesting)
+        throw LevelError(out.path.string() + ": invalid JSON: nested deeper than " + std::to_string(kMaxJsonNesting) +
+                         " levels");
     json doc;
     try {
         doc = json::parse(text);

@@ -47,8 +47,8 @@ std::optional<Divergence> ReplayChecker::after_step(const sim::World& world) {
     // The full subsystem hashes, where this tick ends a chunk: exact where fingerprints are not.
     const auto& chunk_ends = replay_.hashes;
     while (next_chunk_ < chunk_ends.size() && chunk_ends[next_chunk_].tick < tick) ++next_chunk_;
-    const sim::WorldHash* full =
-        next_chunk_ < chunk_ends.size() && chunk_ends[next_chunk_].tick == tick ? &chunk_ends[next_chunk_].hash : nullptr;
+    const bool chunk_end = next_chunk_ < chunk_ends.size() && chunk_ends[next_chunk_].tick == tick;
+    const sim::WorldHash* full = chunk_end ? &chunk_ends[next_chunk_].hash : nullptr;
     std::vector<std::string> by_full;
     if (full)
         for (size_t i = 0; i < parts && i < full->parts.size(); ++i)
@@ -63,7 +63,8 @@ std::optional<Divergence> ReplayChecker::after_step(const sim::World& world) {
     }
     // The world hash combines the parts, so these need a hash collision or a damaged recording.
     if (full && (!by_full.empty() || full->parts.size() != got.parts.size()))
-        return divergence(tick, world_hash + " matches the recording but the subsystem hashes recorded at this chunk's end do not",
+        return divergence(tick,
+                          world_hash + " matches the recording but the subsystem hashes recorded at this chunk's end do not",
                           by_full, "their count differs");
     if (!by_fingerprint.empty())
         return divergence(tick, world_hash + " matches the recording but the recorded subsystem fingerprints do not",

@@ -16,6 +16,7 @@
 //            crc32(that payload)
 //            Per-tick hashes let a checker name the first diverging tick; the fingerprints name
 //            its subsystem (a one-byte fingerprint misses a difference with probability 1/256).
+//            The chunk-end world hash is the last world_hash entry: it is not stored twice.
 //   end    : "END!" total_ticks:u32 chunk_count:u32 crc32(tag and these fields)
 #include <array>
 #include <cstddef>

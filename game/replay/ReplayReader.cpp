@@ -198,11 +198,14 @@ private:
                     replay.inputs.push_back(input);
                 }
                 const size_t world_at = at + 2 * size_t(count);
-                for (uint32_t i = 0; i < count; ++i) replay.tick_world_hashes.push_back(get_u64(&bytes_[world_at + 8 * i]));
+                for (uint32_t i = 0; i < count; ++i)
+                    replay.tick_world_hashes.push_back(get_u64(&bytes_[world_at + 8 * i]));
                 const size_t fingerprints_at = world_at + 8 * size_t(count);
                 const size_t parts_at = fingerprints_at + size_t(count) * parts;
-                const std::span<const uint8_t> fingerprints = bytes_.subspan(fingerprints_at, parts_at - fingerprints_at);
-                replay.tick_fingerprints.insert(replay.tick_fingerprints.end(), fingerprints.begin(), fingerprints.end());
+                const std::span<const uint8_t> fingerprints =
+                    bytes_.subspan(fingerprints_at, parts_at - fingerprints_at);
+                replay.tick_fingerprints.insert(replay.tick_fingerprints.end(), fingerprints.begin(),
+                                                fingerprints.end());
                 ReplayCheckpointHash& h = replay.hashes.emplace_back();
                 h.tick = first + count;
                 h.hash.world = replay.tick_world_hashes.back();  // stored once, as the last tick's

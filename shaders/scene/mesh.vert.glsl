@@ -4,6 +4,7 @@ layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_color;
 
 uniform mat4 u_model;
+uniform mat3 u_normal_matrix;
 uniform mat4 u_view_proj;
 
 out vec3 v_world_pos;
@@ -13,7 +14,7 @@ out vec4 v_color;
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
     v_world_pos = world.xyz;
-    v_normal = normalize(mat3(transpose(inverse(u_model))) * a_normal);
+    v_normal = normalize(u_normal_matrix * a_normal);
     v_color = a_color;
     gl_Position = u_view_proj * world;
 }

@@ -1,0 +1,222 @@
+// The program as a user meets it: every kind of bad input gets one clear message, a
+// non-zero exit code and no output file; good input round-trips.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "game/capture/ImageFiles.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CommandResult {
+    int code = -1;
+    std::string output;  // stdout and stderr
+};
+
+CommandResult run(const std::string& args) {
+    std::string cmd = std::string(SPINDRIFT_BIN) + " " + args + " 2>&1";
+    CommandResult r;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
+    int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return r;
+}
+
+std::string read_file(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+void write_file(const fs::path& p, const std::string& bytes) {
+    std::ofstream out(p, std::ios::binary);
+    out << bytes;
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("spindrift_cli_" + std::to_string(::getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+
+    // A short recording of the harbour level.
+    fs::path record(const std::string& script_text, const std::string& name = "r.replay") {
+        fs::path script = dir_ / "s.script", out = dir_ / name;
+        write_file(script, script_text);
+        CommandResult r = run("record --level harbour --script " + script.string() + " --out " + out.string());
+        EXPECT_EQ(r.code, 0) << r.output;
+        return out;
+    }
+    static constexpr const char* kShortScript = "level harbour\n0 hold throttle\n100 tap throw_heavy\n150 hold\n200 end\n";
+};
+
+TEST_F(Cli, HelpNamesEveryCommandAndExitCode) {
+    CommandResult r = run("--help");
+    EXPECT_EQ(r.code, 0);
+    for (const char* w : {"play", "record", "replay", "bench", "exit codes"}) EXPECT_NE(r.output.find(w), std::string::npos) << w;
+    EXPECT_EQ(run("--version").code, 0);
+    EXPECT_EQ(run("fly").code, 2);
+    EXPECT_EQ(run("replay x.replay --fast").code, 2);
+    EXPECT_EQ(run("replay x.replay --threads 0").code, 2);
+    EXPECT_EQ(run("replay x.replay --frames 1,x").code, 2);
+}
+
+TEST_F(Cli, RecordedReplayChecksWithAnyThreadCount) {
+    fs::path rep = record(kShortScript);
+    CommandResult a = run("replay " + rep.string() + " --headless --check --frames none");
+    EXPECT_EQ(a.code, 0) << a.output;
+    EXPECT_NE(a.output.find("check passed"), std::string::npos) << a.output;
+    CommandResult b = run("replay " + rep.string() + " --headless --check --frames none --threads 2");
+    EXPECT_EQ(b.code, 0) << b.output;
+}
+
+TEST_F(Cli, BadScriptsAreRefusedBeforeAnyFileIsWritten) {
+    struct Case {
+        const char* text;
+        const char* says;
+    } cases[] = {
+        {"level harbour\n0 hold throttle jump\n10 end\n", "unknown control"},
+        {"level harbour\n20 hold throttle\n10 hold brake\n30 end\n", "before the previous tick"},
+        {"level harbour\n0 hold throttle\n", "end"},
+        {"level nowhere\n0 hold\n10 end\n", "nowhere"},
+    };
+    for (const Case& c : cases) {
+        fs::path script = dir_ / "bad.script", out = dir_ / "bad.replay";
+        write_file(script, c.text);
+        std::string level = std::string(c.text).find("nowhere") != std::string::npos ? "nowhere" : "harbour";
+        CommandResult r = run("record --level " + level + " --script " + script.string() + " --out " + out.string());
+        EXPECT_EQ(r.code, 3) << c.text << r.output;
+        EXPECT_NE(r.output.find(c.says), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(out)) << c.text;
+    }
+}
+
+TEST_F(Cli, BrokenLevelsAreRefused) {
+    const fs::path levels = fs::path(SPINDRIFT_TEST_DATA) / "levels";
+    write_file(dir_ / "s.script", "0 hold\n10 end\n");
+    for (const char* name : {"bad_json", "wrong_type", "missing_key", "missing_asset", "garbage_gltf", "accessor_oob",
+                             "out_of_range"}) {
+        fs::path out = dir_ / "x.replay";
+        CommandResult r = run("record --level " + (levels / (std::string(name) + ".json")).string() + " --script " +
+                    (dir_ / "s.script").string() + " --out " + out.string());
+        EXPECT_EQ(r.code, 3) << name << ": " << r.output;
+        EXPECT_NE(r.output.find("error:"), std::string::npos) << r.output;
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one message: " << r.output;
+        EXPECT_FALSE(fs::exists(out));
+    }
+}
+
+TEST_F(Cli, CorruptReplaysAreRefusedWithOneMessage) {
+    const std::string good = read_file(record(kShortScript, "good.replay"));
+    ASSERT_GT(good.size(), 200u);
+    struct Case {
+        std::string name, bytes, says;
+    };
+    std::string flipped = good;
+    flipped[flipped.size() * 3 / 4] = char(flipped[flipped.size() * 3 / 4] ^ 0x5a);
+    std::string version = good;
+    version[8] = char(version[8] + 1);
+    std::vector<Case> cases = {
+        {"cut_header", good.substr(0, 20), "cut inside its header"},
+        {"magic", "JUNK" + good.substr(4), "not a Spindrift replay"},
+        {"version", version, "version"},
+        {"flipped", flipped, "CRC"},
+        {"trailing", good + "garbage!", "trailing"},
+        {"empty", "", "empty"},
+    };
+    for (const Case& c : cases) {
+        fs::path p = dir_ / (c.name + ".replay");
+        write_file(p, c.bytes);
+        CommandResult r = run("replay " + p.string() + " --headless --check --frames none");
+        EXPECT_EQ(r.code, 3) << c.name << ": " << r.output;
+        EXPECT_NE(r.output.find(c.says), std::string::npos) << c.name << ": " << r.output;
+    }
+    CommandResult missing = run("replay " + (dir_ / "nope.replay").string() + " --headless");
+    EXPECT_EQ(missing.code, 3) << missing.output;
+}
+
+TEST_F(Cli, AReplayOfAnotherLevelIsRefused) {
+    // The same level under another name and with one prop moved: its content differs.
+    const fs::path data = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path();
+    std::string json = read_file(data / "levels" / "harbour.json");
+    auto at = json.find("\"id\": \"harbour\"");
+    ASSERT_NE(at, std::string::npos);
+    json.replace(at, 15, "\"id\": \"harbour2\"");
+    fs::create_directories(dir_ / "levels");
+    fs::create_directory_symlink(data / "levels" / "harbour", dir_ / "levels" / "harbour2");
+    write_file(dir_ / "levels" / "harbour2.json", json);
+    write_file(dir_ / "s.script", "0 hold throttle\n60 end\n");
+    fs::path rep = dir_ / "other.replay";
+    CommandResult rec = run("record --level " + (dir_ / "levels" / "harbour2.json").string() + " --script " +
+                  (dir_ / "s.script").string() + " --out " + rep.string());
+    ASSERT_EQ(rec.code, 0) << rec.output;
+    // Named by its id, the level is not among the bundled ones.
+    CommandResult by_id = run("replay " + rep.string() + " --headless --frames none");
+    EXPECT_EQ(by_id.code, 3) << by_id.output;
+    EXPECT_NE(by_id.output.find("harbour2"), std::string::npos) << by_id.output;
+    // Forced onto the harbour level, the content hash tells them apart.
+    CommandResult forced = run("replay " + rep.string() + " --headless --frames none --level harbour");
+    EXPECT_EQ(forced.code, 3) << forced.output;
+    EXPECT_NE(forced.output.find("content hash"), std::string::npos) << forced.output;
+}
+
+TEST_F(Cli, ACutRecordingReplaysItsPrefixUnlessStrict) {
+    std::string bytes = read_file(record("level harbour\n0 hold throttle\n300 end\n"));
+    fs::path cut = dir_ / "cut.replay";
+    write_file(cut, bytes.substr(0, bytes.size() - 40));  // inside the last chunk and the end record
+    CommandResult r = run("replay " + cut.string() + " --headless --check --frames none");
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("cut"), std::string::npos) << r.output;
+    CommandResult strict = run("replay " + cut.string() + " --headless --check --frames none --strict");
+    EXPECT_EQ(strict.code, 3) << strict.output;
+}
+
+TEST_F(Cli, FrameChecksCatchAWrongGoldenAndNameTheEvidence) {
+    fs::path rep = record("level harbour\nframes 64x36\ncheckpoints 30\n0 hold throttle\n40 end\n");
+    // No golden yet: the check fails and says how to make one.
+    CommandResult none = run("replay " + rep.string() + " --headless --check --out " + (dir_ / "out").string());
+    EXPECT_EQ(none.code, 1) << none.output;
+    EXPECT_NE(none.output.find("--update-goldens"), std::string::npos) << none.output;
+    CommandResult update = run("replay " + rep.string() + " --headless --update-goldens");
+    ASSERT_EQ(update.code, 0) << update.output;
+    fs::path golden = dir_ / "r" / "tick_000030.png";
+    ASSERT_TRUE(fs::exists(golden));
+    CommandResult pass = run("replay " + rep.string() + " --headless --check --out " + (dir_ / "out").string());
+    EXPECT_EQ(pass.code, 0) << pass.output;
+    // Spoil the golden: the check fails and writes the actual frame and a difference.
+    game::ImageRGBA8 img = game::read_png(golden);
+    for (size_t i = 0; i < img.pixels.size() / 2; i += 4) img.pixels[i] = uint8_t(255 - img.pixels[i]);
+    game::write_png(golden, img);
+    CommandResult fail = run("replay " + rep.string() + " --headless --check --out " + (dir_ / "out").string());
+    EXPECT_EQ(fail.code, 1) << fail.output;
+    EXPECT_TRUE(fs::exists(dir_ / "out" / "tick_000030.actual.png"));
+    EXPECT_TRUE(fs::exists(dir_ / "out" / "tick_000030.diff.png"));
+    EXPECT_NE(fail.output.find("tick_000030.diff.png"), std::string::npos) << fail.output;
+}
+
+TEST_F(Cli, FramesAndExrGoWhereAsked) {
+    fs::path rep = record("level harbour\nframes 64x36\n0 hold throttle\n20 end\n");
+    CommandResult r = run("replay " + rep.string() + " --headless --frames 5,20 --out " + (dir_ / "f").string() + " --exr");
+    ASSERT_EQ(r.code, 0) << r.output;
+    for (const char* f : {"tick_000005.png", "tick_000020.png", "tick_000005.exr", "tick_000020.exr"})
+        EXPECT_TRUE(fs::exists(dir_ / "f" / f)) << f;
+    EXPECT_EQ(run("replay " + rep.string() + " --headless --frames 21").code, 2);
+}
+
+}  // namespace
