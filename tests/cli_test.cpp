@@ -2,13 +2,19 @@
 // non-zero exit code and no output file; good input round-trips.
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <fcntl.h>
+
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
 
 #include "game/capture/ImageFiles.h"
 
@@ -185,6 +191,34 @@ TEST_F(Cli, ACutRecordingReplaysItsPrefixUnlessStrict) {
     EXPECT_NE(r.output.find("cut"), std::string::npos) << r.output;
     CommandResult strict = run("replay " + cut.string() + " --headless --check --frames none --strict");
     EXPECT_EQ(strict.code, 3) << strict.output;
+}
+
+TEST_F(Cli, ARecordingKilledMidwayReplaysUpToItsLastWholeChunk) {
+    // Long enough that the kill lands while recording.
+    fs::path script = dir_ / "long.script", out = dir_ / "killed.replay";
+    write_file(script, "level harbour\n0 hold throttle steer_left\n400000 end\n");
+    pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        int null = ::open("/dev/null", O_WRONLY);
+        dup2(null, 1);
+        dup2(null, 2);
+        execl(SPINDRIFT_BIN, SPINDRIFT_BIN, "record", "--level", "harbour", "--script", script.c_str(), "--out",
+              out.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // Wait until a few chunks are on disk, then kill without warning.
+    for (int i = 0; i < 600 && !(fs::exists(out) && fs::file_size(out) > 8000); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status));
+    ASSERT_TRUE(fs::exists(out));
+    CommandResult r = run("replay " + out.string() + " --headless --check --frames none");
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("cut after tick"), std::string::npos) << r.output;
+    EXPECT_EQ(run("replay " + out.string() + " --headless --check --frames none --strict").code, 3);
 }
 
 TEST_F(Cli, FrameChecksCatchAWrongGoldenAndNameTheEvidence) {

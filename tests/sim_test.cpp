@@ -88,7 +88,7 @@ TEST(Car, AcceleratesForwardAndStopsWithoutReversing) {
         ++ticks;
     }
     EXPECT_LT(ticks, 240);  // about 1 g of braking from ~70 km/h
-    EXPECT_GE(car.speed_mps(), 0.0f);  // braking never pushes it backwards
+    EXPECT_GT(car.speed_mps(), -0.1f);  // braking to a stop, not into reverse
     float x_stopped = car.position().x;
     run(w, 60, TickInput{});
     EXPECT_NEAR(car.position().x, x_stopped, 0.05f);  // and it doesn't creep
@@ -105,6 +105,23 @@ TEST(Car, SteersLeftAndRight) {
     EXPECT_LT(right.get<sim::Car>().pose().heading_rad, -0.5f);
     // Heading positive turns towards -z.
     EXPECT_LT(left.get<sim::Car>().position().z, -12.0f);
+}
+
+TEST(Car, ReversesUnderControlAndSteersTheOtherWay) {
+    // Reversing with the wheel turned left swings the nose right, like a real car,
+    // without spinning out.
+    sim::LevelDesc l = make_test_level();
+    l.solids.clear();
+    sim::World w(l);
+    run(w, 180, held({Control::Brake}));
+    run(w, 120, held({Control::Brake, Control::SteerLeft}));
+    const sim::Car& car = w.get<sim::Car>();
+    EXPECT_LT(car.speed_mps(), -3.0f);
+    EXPECT_LT(car.pose().heading_rad, -0.3f);
+    EXPECT_GT(car.pose().heading_rad, -2.0f);
+    // Throttle from reverse slows the car and drives it forward again.
+    run(w, 75, held({Control::Throttle}));
+    EXPECT_GT(car.speed_mps(), 0.5f);
 }
 
 TEST(Car, GripsLessOffRoad) {

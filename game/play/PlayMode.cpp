@@ -58,7 +58,10 @@ fs::path screenshot_path(std::chrono::system_clock::time_point when) {
 std::vector<std::string> demo_replay_args(const fs::path& replay, uint32_t ticks, const fs::path& out_dir) {
     constexpr uint32_t kEvery = 30;
     std::string frames;
-    for (uint32_t t = kEvery; t <= ticks; t += kEvery) frames += (frames.empty() ? "" : ",") + std::to_string(t);
+    for (uint32_t t = kEvery; t <= ticks; t += kEvery) {
+        if (!frames.empty()) frames += ',';
+        frames += std::to_string(t);
+    }
     // A replay shorter than the interval still shows its last frame.
     if (frames.empty()) frames = ticks > 0 ? std::to_string(ticks) : "none";
     return {replay.string(), "--headless", "--frames", frames, "--out", out_dir.string()};

@@ -35,9 +35,9 @@ void Car::step(StepContext& ctx) {
     DriveInput in = ctx.world.get<Player>().drive_input(Vehicle::Car);
     float u0 = u_, v0 = v_;
     float h = ctx.dt / kSubsteps;
-    // Reverse engages only from standing still (brakes stop the car at exactly 0), decided once per tick, so
+    // Reverse engages only from (nearly) standing still, decided once per tick, so
     // braking to a stop never carries on into reverse within the same tick.
-    bool reverse = in.brake > 0.0f && in.throttle == 0.0f && !in.parked && u_ <= 0.0f;
+    bool reverse = in.brake > 0.0f && in.throttle == 0.0f && !in.parked && u_ <= 0.05f;
     for (int i = 0; i < kSubsteps; ++i) substep(in, reverse, terrain, h);
     follow_ground(terrain);
     accel_ = {(u_ - u0) / ctx.dt, (v_ - v0) / ctx.dt + u_ * r_};
@@ -75,9 +75,12 @@ void Car::substep(const DriveInput& in, bool reverse, const Terrain& terrain, fl
     float fx = drive - sign_u * p_.rolling_resist_n - p_.drag_coeff * u_ * std::fabs(u_);
 
     // Lateral: slip angles and saturating tyre forces.
-    float u_safe = std::fabs(u_) < 1.0f ? (u_ < 0.0f ? -1.0f : 1.0f) : u_;
-    float alpha_f = std::atan((v_ + a * r_) / u_safe) - steer_;
-    float alpha_r = std::atan((v_ - b * r_) / u_safe);
+    // Slip angles against the direction of travel: in reverse the sliding speed is
+    // still opposed and the steered wheels turn the car the other way.
+    float speed = std::max(std::fabs(u_), 1.0f);
+    float travel = u_ < 0.0f ? -1.0f : 1.0f;
+    float alpha_f = std::atan((v_ + a * r_) / speed) - travel * steer_;
+    float alpha_r = std::atan((v_ - b * r_) / speed);
     float cap_f = mu * fz_front, cap_r = mu * fz_rear;
     float fy_f = -cap_f * std::tanh(p_.cornering_stiffness_npr * alpha_f / cap_f);
     float fy_r = -cap_r * std::tanh(p_.cornering_stiffness_npr * alpha_r / cap_r);
@@ -93,11 +96,13 @@ void Car::substep(const DriveInput& in, bool reverse, const Terrain& terrain, fl
     float brake_dv = brake / p_.mass_kg * h;
     u_ = std::fabs(u_) <= brake_dv ? 0.0f : u_ - brake_dv * (u_ > 0.0f ? 1.0f : -1.0f);
 
-    // Below walking pace tyre slip is meaningless: blend into rolling without slip.
+    // Below walking pace tyre slip is meaningless: blend into rolling without slip,
+    // where the rear axle has no sideways speed (v = b r) and r = u tan(steer) / L.
     float k = std::clamp((std::fabs(u_) - 1.0f) / 2.0f, 0.0f, 1.0f);
     float r_kinematic = u_ * std::tan(steer_) / wheelbase;
+    float v_kinematic = b * r_kinematic;
     r_ = r_kinematic + (r_ - r_kinematic) * k;
-    v_ *= k;
+    v_ = v_kinematic + (v_ - v_kinematic) * k;
 
     Pose before = pose_;
     pose_.heading_rad += r_ * h;
