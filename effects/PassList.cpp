@@ -3,9 +3,9 @@
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
-#include "effects/scene/SeaPass.h"
 #include "effects/scene/ShadowPass.h"
 #include "effects/scene/TonemapPass.h"
+#include "effects/water/WaterPass.h"
 
 namespace effects {
 
@@ -15,7 +15,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     passes.push_back(std::make_unique<ShadowPass>());
     passes.push_back(std::make_unique<OpaquePass>());
     passes.push_back(std::make_unique<SceneCopyPass>());
-    passes.push_back(std::make_unique<SeaPass>());
+    passes.push_back(std::make_unique<WaterPass>());
     passes.push_back(std::make_unique<TonemapPass>());
     return passes;
 }

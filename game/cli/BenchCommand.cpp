@@ -8,6 +8,7 @@
 #include "effects/Renderer.h"
 #include "game/bench/BenchReport.h"
 #include "game/bench/SubsystemTimer.h"
+#include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
 #include "game/cli/Args.h"
 #include "game/cli/Commands.h"
@@ -117,6 +118,8 @@ int bench_command(const std::vector<std::string>& argv) {
     bench_sim(report, quick ? 300 : 1800);
     std::cerr << "bench: replay check\n";
     bench_replay_check(report, quick ? 300 : 1800);
+    std::cerr << "bench: water\n";
+    bench_water(report, quick);
 
     HeadlessContext context;
     std::cerr << "bench: render (" << context.renderer() << ")\n";

@@ -125,7 +125,7 @@ public:
 
     // Everything in the JSON, checked; assets are only named here, not loaded.
     void parse(sim::LevelDesc& level, std::vector<Placement>& placements) {
-        r_.object(doc_, "", {"format", "id", "seed", "world", "roads", "sun", "rain", "car", "boat", "tank_spot", "props"});
+        r_.object(doc_, "", {"format", "id", "seed", "world", "roads", "sun", "rain", "water", "car", "boat", "tank_spot", "props"});
         const json& format = r_.required(doc_, "", "format");
         if (!format.is_number_unsigned() || format.get<uint64_t>() != 1)
             r_.fail("format", "unsupported format " + (format.is_primitive() ? format.dump() : std::string(format.type_name())) +
@@ -151,6 +151,7 @@ public:
             r_.object(*rain, "rain", {"intensity"});
             level.rain_intensity = r_.number_in(r_.required(*rain, "rain", "intensity"), "rain.intensity", 0.0f, 1.0f);
         }
+        if (const json* water = LevelReader::optional(doc_, "water")) water_grid(*water, level);
         placements.push_back(placement(r_.required(doc_, "", "car"), "car", false));
         placements.push_back(placement(r_.required(doc_, "", "boat"), "boat", false));
         level.car_spawn = {placements[0].position, placements[0].heading_rad};
@@ -164,6 +165,22 @@ public:
     }
 
 private:
+    // "water": {"grid_origin_xz": [x, z], "grid_size": 256, "grid_spacing_m": 0.5,
+    //           "wave_speed_mps": 2.5, "damping_per_s": 0.25}; the sim checks stability.
+    void water_grid(const json& w, sim::LevelDesc& level) {
+        r_.object(w, "water", {"grid_origin_xz", "grid_size", "grid_spacing_m", "wave_speed_mps", "damping_per_s"});
+        sim::WaterGridDesc& g = level.water;
+        g.enabled = true;
+        g.origin_xz = r_.vec<2>(r_.required(w, "water", "grid_origin_xz"), "water.grid_origin_xz");
+        const json& size = r_.required(w, "water", "grid_size");
+        if (!size.is_number_integer() || size.get<int64_t>() < 8 || size.get<int64_t>() > 2048)
+            r_.fail("water.grid_size", "expected a whole number from 8 to 2048");
+        g.size = int(size.get<int64_t>());
+        g.spacing_m = r_.number_in(r_.required(w, "water", "grid_spacing_m"), "water.grid_spacing_m", 0.01f, 100.0f);
+        g.wave_speed_mps = r_.number_in(r_.required(w, "water", "wave_speed_mps"), "water.wave_speed_mps", 0.0f, 100.0f, true);
+        g.damping_per_s = r_.number_in(r_.required(w, "water", "damping_per_s"), "water.damping_per_s", 0.0f, 10.0f);
+    }
+
     void world(const json& w, sim::LevelDesc& level) {
         r_.object(w, "world", {"half_extent_m", "land_height_m", "shore_z_m", "sea_level_m", "seabed_m", "hills"});
         auto num = [&](const char* key, float lo, float hi, bool lo_open = false) {

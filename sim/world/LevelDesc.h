@@ -35,6 +35,17 @@ struct Spawn {
     float heading_rad = 0.0f;  // 0 faces +x, positive turns towards -z (counter-clockwise seen from above)
 };
 
+// Where the harbour's wave grid lies (specs/water.md); a level without one has a
+// flat sea.
+struct WaterGridDesc {
+    bool enabled = false;
+    glm::vec2 origin_xz{0.0f};  // world xz of cell (0, 0)
+    int size = 256;             // cells per side
+    float spacing_m = 0.5f;
+    float wave_speed_mps = 2.5f;
+    float damping_per_s = 0.25f;
+};
+
 struct LevelDesc {
     std::string id;
     uint64_t seed = 1;
@@ -59,6 +70,7 @@ struct LevelDesc {
 
     glm::vec3 sun_direction{0.4f, 0.8f, 0.3f};  // towards the sun, normalised by the loader
     float rain_intensity = 0.0f;                // 0..1 at start
+    WaterGridDesc water;
 };
 
 }  // namespace sim

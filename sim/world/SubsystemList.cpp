@@ -5,6 +5,7 @@
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
+#include "sim/water/WaterSim.h"
 #include "sim/weapon/Weapon.h"
 #include "sim/world/World.h"
 
@@ -17,6 +18,19 @@ void add_standard_subsystems(World& world) {
     world.add(std::make_unique<Boat>(level.boat_spawn));
     world.add(std::make_unique<Weapon>(level.seed));
     world.add(std::make_unique<ThrownObjects>());
+    if (level.water.enabled) {
+        // After the objects (it reacts to their water entries this tick); boats and
+        // floats ride it from the next tick on.
+        WaterParams params;
+        params.grid.origin_xz = level.water.origin_xz;
+        params.grid.size = level.water.size;
+        params.grid.spacing_m = level.water.spacing_m;
+        params.grid.wave_speed_mps = level.water.wave_speed_mps;
+        params.grid.damping_per_s = level.water.damping_per_s;
+        auto water = std::make_unique<WaterSim>(params, level, level.seed);
+        world.set_sea(water.get());
+        world.add(std::move(water));
+    }
     world.add(std::make_unique<CameraRig>());
 }
 

@@ -1,0 +1,31 @@
+#pragma once
+// Spray droplets as camera-facing sprites: soft round discs, lit by the sky and the
+// sun (brighter looking towards it), blended over the scene without writing depth.
+#include "effects/gl/Buffer.h"
+#include "effects/gl/Program.h"
+#include "effects/gl/VertexArray.h"
+#include "effects/scene/FrameContext.h"
+#include "effects/water/WaterView.h"
+
+namespace effects {
+
+struct SprayLook {
+    float min_pixels = 1.5f;  // smallest drawn diameter; smaller drops spread their light over it
+    float opacity = 0.7f;
+};
+
+class SprayRenderer {
+public:
+    SprayRenderer();
+
+    // Uploads the drops and draws them into the bound scene framebuffer; sets and
+    // restores its own blend, depth-write and colour-mask state.
+    void draw(const FrameContext& frame, std::span<const SprayDrop> drops, const SprayLook& look);
+
+private:
+    gl::Program program_;
+    gl::Buffer instances_;
+    gl::VertexArray vao_;
+};
+
+}  // namespace effects

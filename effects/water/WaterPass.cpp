@@ -1,0 +1,87 @@
+#include "effects/water/WaterPass.h"
+
+namespace effects {
+
+WaterPass::WaterPass() = default;
+
+void WaterPass::register_params(ParamRegistry& params) {
+    params.add("water", "foam", &look_.foam, 0.0f, 3.0f);
+    params.add("water", "shore foam", &look_.shore_foam, 0.0f, 1.0f);
+    params.add("water", "absorption", &look_.absorption, 0.0f, 4.0f);
+    params.add("water", "refraction", &look_.refraction, 0.0f, 0.1f);
+    params.add("water", "ripples", &look_.ripples, 0.0f, 2.0f);
+    params.add("water", "sheet thickness m", &look_.sheet_thickness_m, 0.002f, 0.1f);
+    params.add("water", "sheet tear stretch", &look_.sheet_tear_stretch, 1.5f, 50.0f);
+    params.add("water", "triangle size px", &look_.triangle_px, 2.0f, 32.0f);
+    params.add("water", "spray opacity", &look_.spray.opacity, 0.0f, 1.0f);
+    params.add("water", "spray min pixels", &look_.spray.min_pixels, 0.5f, 4.0f);
+}
+
+void WaterPass::render(const FrameContext& frame) {
+    gather_water_view(frame.world, view_);
+    draw(frame, view_);
+}
+
+void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
+    view.validate();
+    const SceneTargets& t = frame.scene.targets;
+    const Camera& cam = frame.camera;
+    const float time_s = float(frame.time_s);
+    surface_.update(view);  // its own small pass first: it binds another framebuffer
+
+    // Geometry: depth, normals and the water kind, with a cheap shader. Sheets first:
+    // they stand above the surface, whose pixels behind them then fail the depth test.
+    shading_.begin_geometry(t);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    const bool sheets = sheets_.update(view, look_.sheet_tear_stretch);
+    if (sheets) {
+        const gl::Program& p = sheets_.program();
+        p.use();
+        p.set("u_view_proj", cam.view_proj);
+        p.set("u_eye", cam.eye);
+        p.set("u_sea_level", view.sea_level_m);
+        p.set("u_foam", look_.foam);
+        sheets_.draw();
+    }
+    {
+        const gl::Program& p = surface_.program();
+        p.use();
+        p.set("u_view_proj", cam.view_proj);
+        p.set("u_eye", cam.eye);
+        p.set("u_time_s", time_s);
+        p.set("u_sea_level", view.sea_level_m);
+        p.set("u_ripples", look_.ripples);
+        surface_.draw(cam, t.height(), look_.triangle_px);
+    }
+
+    // Shading, once per water pixel.
+    for (const gl::Program* p : {&shading_.sea_program(), &shading_.sheet_program()}) {
+        frame.scene.lighting.apply(*p);
+        p->set("u_inv_view_proj", cam.inv_view_proj);
+        p->set("u_eye", cam.eye);
+        p->set("u_time_s", time_s);
+        p->set("u_sea_level", view.sea_level_m);
+        p->set("u_inv_viewport", glm::vec2(1.0f / float(t.width()), 1.0f / float(t.height())));
+        p->set("u_scene_colour", 0);
+        p->set("u_scene_depth", 1);
+        p->set("u_absorption", look_.absorption);
+        p->set("u_refraction", look_.refraction);
+        p->set("u_foam", look_.foam);
+        p->set("u_shore_foam", look_.shore_foam);
+        p->set("u_sheet_thickness_m", look_.sheet_thickness_m);
+    }
+    t.colour_copy().bind(0);
+    t.depth_copy().bind(1);
+    shading_.shade(t, sheets);
+
+    // Spray over the shaded water, in the scene framebuffer (depth-tested, not written).
+    glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
+    glViewport(0, 0, t.width(), t.height());
+    spray_.draw(frame, view.spray, look_.spray);
+}
+
+}  // namespace effects

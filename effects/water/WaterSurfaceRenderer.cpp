@@ -1,0 +1,121 @@
+#include "effects/water/WaterSurfaceRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "effects/gl/EmptyVertexArray.h"
+
+namespace effects {
+
+WaterSurfaceRenderer::WaterSurfaceRenderer()
+    : program_(gl::Program::from_files("water.surface", {"water/surface.vert.glsl", "water/surface.frag.glsl"})),
+      slope_program_(gl::Program::from_files("water.slopes", {"common/fullscreen.vert.glsl", "water/slopes.frag.glsl"})) {}
+
+void WaterSurfaceRenderer::rebuild(const WaterView& view, const Shape& shape) {
+    mesh_ = make_water_surface_mesh(view.grid ? &*view.grid : nullptr, kMaxLatticeCells, kTileCells, kHorizonExtent_m);
+    vertices_ = gl::Buffer::create<SurfaceVertex>("water.surface.vertices", mesh_.vertices, 0);
+    indices_ = gl::Buffer::create<uint32_t>("water.surface.indices", mesh_.indices, 0);
+    mesh_.vertices = {};
+    mesh_.indices = {};
+    vao_ = gl::VertexArray::create("water.surface");
+    vao_.attribute(0, 0, 4, GL_FLOAT, 0);
+    vao_.vertex_buffer(0, vertices_, 0, sizeof(SurfaceVertex));
+    vao_.element_buffer(indices_);
+
+    // Without a grid the shaders still sample (zero) heights and slopes: 1x1 textures.
+    const int side = shape.has_grid ? shape.size : 1;
+    heights_ = gl::Texture::create_2d("water.heights", GL_R32F, side, side);
+    heights_.set_filter(GL_LINEAR, GL_LINEAR);
+    heights_.set_wrap(GL_CLAMP_TO_EDGE);
+    slopes_ = gl::Texture::create_2d("water.slopes", GL_RGBA16F, side, side, gl::Texture::full_mip_levels(side, side));
+    slopes_.set_filter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    slopes_.set_wrap(GL_CLAMP_TO_EDGE);
+    slope_fbo_ = gl::Framebuffer::create("water.slopes");
+    slope_fbo_.attach_colour(0, slopes_);
+    slope_fbo_.check_complete();
+    if (!shape.has_grid) {
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        heights_.upload<float>(GL_RED, GL_FLOAT, std::span<const float>(zero, 1));
+        slopes_.upload<float>(GL_RGBA, GL_FLOAT, std::span<const float>(zero, 4));
+    }
+    shape_ = shape;
+}
+
+void WaterSurfaceRenderer::update(const WaterView& view) {
+    Shape shape;
+    if (view.grid) shape = {true, view.grid->size, view.grid->spacing_m, view.grid->origin_xz};
+    if (shape_ != shape) rebuild(view, shape);
+    sea_level_m_ = view.sea_level_m;
+    min_height_ = max_height_ = 0.0f;
+    if (view.grid) {
+        for (float h : view.grid->heights)
+            if (std::isfinite(h)) {
+                min_height_ = std::min(min_height_, h);
+                max_height_ = std::max(max_height_, h);
+            }
+        heights_.upload<float>(GL_RED, GL_FLOAT, view.grid->heights);
+        glBindFramebuffer(GL_FRAMEBUFFER, slope_fbo_.id());
+        glViewport(0, 0, shape.size, shape.size);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        slope_program_.use();
+        slope_program_.set("u_heights", int(kHeightsUnit));
+        slope_program_.set("u_spacing", shape.spacing_m);
+        heights_.bind(kHeightsUnit);
+        gl::bind_empty_vertex_array();
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        slopes_.generate_mipmaps();
+    }
+
+    const gl::Program& p = program_;
+    const LatticeLayout& l = mesh_.lattice;
+    p.set("u_has_grid", shape.has_grid ? 1 : 0);
+    p.set("u_grid_size", shape.has_grid ? shape.size : 1);
+    p.set("u_grid_spacing", shape.has_grid ? shape.spacing_m : 1.0f);
+    p.set("u_grid_origin", shape.origin_xz);
+    p.set("u_lattice_origin", l.origin_xz);
+    p.set("u_lattice_cell_m", l.cell_m);
+    p.set("u_lattice_cells", l.lattice_cells);
+    p.set("u_heights", int(kHeightsUnit));
+    p.set("u_slopes", int(kSlopesUnit));
+}
+
+void WaterSurfaceRenderer::draw(const Camera& camera, int viewport_height, float target_cell_px) {
+    const gl::Program& p = program_;
+    heights_.bind(kHeightsUnit);
+    slopes_.bind(kSlopesUnit);
+    vao_.bind();
+    auto draw_range = [](const IndexRange& r) {
+        glDrawElements(GL_TRIANGLES, GLsizei(r.count), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(size_t(r.first) * sizeof(uint32_t)));
+    };
+    const LatticeLayout& l = mesh_.lattice;
+    tiles_.clear();
+    if (l.lattice_cells > 0) {
+        LodView lod;
+        lod.view_proj = camera.view_proj;
+        lod.eye = camera.eye;
+        lod.pixels_per_radian = 0.5f * camera.proj[1][1] * float(viewport_height);
+        lod.target_cell_px = target_cell_px;
+        lod.min_y = sea_level_m_ + min_height_ - 0.01f;
+        lod.max_y = sea_level_m_ + max_height_ + 0.01f;
+        tiles_ = plan_tiles(l, lod);
+        p.set("u_tile_cells", l.tile_cells);
+        for (const TileDraw& t : tiles_) {
+            p.set("u_tile_origin", t.tile * l.tile_cells);
+            glProgramUniform4i(p.id(), p.location("u_edge_stride"), t.edge_stride.x, t.edge_stride.y, t.edge_stride.z,
+                               t.edge_stride.w);
+            int level = 0;
+            while ((1 << level) < t.stride) ++level;
+            draw_range(mesh_.tile_strides[size_t(level)]);
+        }
+    }
+    // The frame's lattice vertices are absolute: no tile offset, no folding.
+    p.set("u_tile_origin", glm::ivec2(0));
+    p.set("u_tile_cells", 1 << 30);
+    glProgramUniform4i(p.id(), p.location("u_edge_stride"), 1, 1, 1, 1);
+    draw_range(mesh_.frame);
+}
+
+}  // namespace effects

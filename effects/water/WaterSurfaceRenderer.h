@@ -1,0 +1,63 @@
+#pragma once
+// Draws the sea surface's geometry step (WaterShading): the wave grid's lattice tiles
+// (strides from SurfaceLod), displaced by the grid's heights, and the flat frame
+// around them (shaders/water/surface.*.glsl). Each frame the heights go into an R32F
+// texture and a small pass turns them into slopes and curvature (RGBA16F, mipmapped)
+// so that the sea's pixels read one texel instead of five.
+#include <optional>
+#include <vector>
+
+#include "effects/gl/Buffer.h"
+#include "effects/gl/Framebuffer.h"
+#include "effects/gl/Program.h"
+#include "effects/gl/Texture.h"
+#include "effects/gl/VertexArray.h"
+#include "effects/scene/Camera.h"
+#include "effects/water/SurfaceLod.h"
+#include "effects/water/WaterSurfaceMesh.h"
+#include "effects/water/WaterView.h"
+
+namespace effects {
+
+class WaterSurfaceRenderer {
+public:
+    static constexpr int kMaxLatticeCells = 256;
+    static constexpr int kTileCells = 32;
+    static constexpr float kHorizonExtent_m = 3000.0f;  // the flat frame's reach
+    static constexpr GLuint kHeightsUnit = 2;
+    static constexpr GLuint kSlopesUnit = 3;
+
+    WaterSurfaceRenderer();
+
+    // Uploads the grid's heights and derives the slopes (binds its own framebuffer:
+    // call before binding the scene's). Rebuilds the mesh when the grid's shape changed.
+    void update(const WaterView& view);
+    // Draws into the bound framebuffer with the program's shared uniforms already set.
+    void draw(const Camera& camera, int viewport_height, float target_cell_px);
+
+    const gl::Program& program() const { return program_; }
+    const std::vector<TileDraw>& last_tiles() const { return tiles_; }
+    const LatticeLayout& lattice() const { return mesh_.lattice; }
+
+private:
+    struct Shape {
+        bool has_grid = false;
+        int size = 0;
+        float spacing_m = 0.0f;
+        glm::vec2 origin_xz{0.0f};
+        bool operator==(const Shape&) const = default;
+    };
+    void rebuild(const WaterView& view, const Shape& shape);
+
+    gl::Program program_, slope_program_;
+    gl::Texture heights_, slopes_;
+    gl::Framebuffer slope_fbo_;
+    gl::Buffer vertices_, indices_;
+    gl::VertexArray vao_;
+    WaterSurfaceMesh mesh_;  // indices dropped after upload; ranges and layout kept
+    std::optional<Shape> shape_;
+    float sea_level_m_ = 0.0f, min_height_ = 0.0f, max_height_ = 0.0f;  // for culling
+    std::vector<TileDraw> tiles_;
+};
+
+}  // namespace effects

@@ -1,0 +1,61 @@
+#pragma once
+// What the water renderer reads of the sim, as plain spans and values: the wave
+// grid's heights, the airborne splash sheets and the spray drops. Gathered from the
+// world's WaterSim each frame; tests fill it directly.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace sim {
+class World;
+}
+
+namespace effects {
+
+// The wave grid: height above sea level of cell (i, j) at heights[j * size + i],
+// the cell standing at origin_xz + (i, j) * spacing_m.
+struct WaveHeights {
+    int size = 0;
+    float spacing_m = 0.0f;
+    glm::vec2 origin_xz{0.0f};
+    std::span<const float> heights;
+
+    glm::vec2 far_corner_xz() const { return origin_xz + glm::vec2(float(size - 1) * spacing_m); }
+};
+
+// One splash sheet: size x size world positions, row-major like the grid, and which
+// of them are above the water (only triangles with three airborne corners are drawn).
+struct SheetView {
+    int size = 0;
+    float spacing_m = 0.0f;  // between neighbouring vertices at rest
+    std::span<const glm::vec3> positions;
+    std::span<const uint8_t> airborne;
+};
+
+// One spray droplet, laid out as the sprite renderer's instance data.
+struct SprayDrop {
+    glm::vec3 position{0.0f};
+    float radius_m = 0.0f;
+};
+static_assert(sizeof(SprayDrop) == 16, "SprayDrop is uploaded as one vec4 per instance");
+
+struct WaterView {
+    float sea_level_m = 0.0f;
+    std::optional<WaveHeights> grid;  // none: a flat sea everywhere
+    std::vector<SheetView> sheets;    // the active ones
+    std::vector<SprayDrop> spray;
+
+    // Throws std::invalid_argument saying which part is inconsistent (sizes that
+    // don't match their arrays, a non-positive spacing, a non-finite placement).
+    void validate() const;
+};
+
+// Refills `out` from the world's sim::WaterSim; without one, a flat sea at the level's
+// sea level. Reuses out's storage so a frame allocates nothing once warmed up.
+void gather_water_view(const sim::World& world, WaterView& out);
+
+}  // namespace effects

@@ -1,0 +1,27 @@
+#version 450 core
+#include "water/waves.glsl"
+// A splash sheet's geometry step (WaterShading): a film of thrown-up water, so its
+// normal faces the eye from either side; how thin it has stretched (kind: 0.76 at 1/x
+// of its rest thickness .. 1 at rest); and how white it is: torn patches fixed in the
+// film (they stretch with it), more of them high up and where it has stretched thin.
+in vec3 v_world_pos;
+in vec3 v_normal;
+in vec2 v_cell;
+in float v_stretch;
+uniform vec3 u_eye;
+uniform float u_sea_level;
+uniform float u_foam;
+layout(location = 0) out vec4 o_normal;
+layout(location = 1) out vec2 o_kind;  // sheet kind with its thickness, whiteness
+
+void main() {
+    vec3 n = normalize(v_normal);
+    if (dot(n, u_eye - v_world_pos) < 0.0) n = -n;
+    float height = v_world_pos.y - u_sea_level;
+    float stretch = max(v_stretch, 1.0);
+    float patches = foam_noise(v_cell * 0.9) * 0.65 + foam_noise(v_cell * 2.7) * 0.35;
+    float whiteness = u_foam * (0.1 + 0.25 * smoothstep(0.2, 1.0, height) + 0.45 * smoothstep(0.5, 0.8, patches) +
+                                0.35 * smoothstep(3.0, 20.0, stretch));
+    o_normal = vec4(n, 1.0);
+    o_kind = vec2(0.76 + 0.24 / stretch, clamp(whiteness, 0.0, 0.9));
+}

@@ -1,0 +1,185 @@
+#include "sim/water/SplashSheet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "sim/core/Hash.h"
+
+namespace sim {
+
+namespace {
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+bool positive(float v) { return std::isfinite(v) && v > 0.0f; }
+
+float sign_of(int v) { return v > 0 ? 1.0f : (v < 0 ? -1.0f : 0.0f); }
+
+}  // namespace
+
+SplashSheet::SplashSheet(const SplashSheetParams& params) : p_(params), n_(params.size) {
+    auto refuse = [](const std::string& what) { throw std::invalid_argument("SplashSheet: " + what); };
+    if (p_.size < 3 || p_.size > 256) refuse("size must be 3..256 vertices per side, got " + std::to_string(p_.size));
+    if (!positive(p_.spacing_m)) refuse("spacing_m must be positive, got " + num(p_.spacing_m));
+    if (!std::isfinite(p_.hidden_depth_m) || p_.hidden_depth_m < 0.0f)
+        refuse("hidden_depth_m must be >= 0, got " + num(p_.hidden_depth_m));
+    if (!std::isfinite(p_.velocity_scale) || p_.velocity_scale < 0.0f)
+        refuse("velocity_scale must be >= 0, got " + num(p_.velocity_scale));
+    if (!std::isfinite(p_.speed_per_momentum) || p_.speed_per_momentum < 0.0f)
+        refuse("speed_per_momentum must be >= 0, got " + num(p_.speed_per_momentum));
+    if (!positive(p_.max_speed_mps) || p_.max_speed_mps > 100.0f)
+        refuse("max_speed_mps must be in (0, 100], got " + num(p_.max_speed_mps));
+    if (!positive(p_.gravity_mps2)) refuse("gravity_mps2 must be positive, got " + num(p_.gravity_mps2));
+    if (!std::isfinite(p_.ripple_depth_m) || p_.ripple_depth_m < 0.0f)
+        refuse("ripple_depth_m must be >= 0, got " + num(p_.ripple_depth_m));
+    const size_t count = size_t(n_) * size_t(n_);
+    pos_.assign(count, glm::vec3(0.0f));
+    vel_.assign(count, glm::vec3(0.0f));
+    airborne_.assign(count, 0);
+}
+
+glm::vec2 SplashSheet::rest_xz(int i, int j) const {
+    const int half = n_ / 2;
+    return {centre_.x + float(i - half) * p_.spacing_m, centre_.y + float(j - half) * p_.spacing_m};
+}
+
+SplashSheet::Band SplashSheet::ring_band(float object_radius_m) const {
+    const int max_ring = (n_ - 1) / 2;  // the whole band must lie inside the sheet
+    float cells = std::isfinite(object_radius_m) ? object_radius_m / p_.spacing_m : 1.0f;
+    int outer = std::clamp(int(std::lround(std::clamp(cells, 0.0f, 1e6f))), 1, max_ring);
+    int width = std::max(1, (outer + 1) / 2);
+    return {std::max(1, outer - width + 1), outer};
+}
+
+float SplashSheet::launch_speed(float momentum_kgmps) const {
+    float m = std::isfinite(momentum_kgmps) ? std::max(momentum_kgmps, 0.0f) : 0.0f;
+    return std::min(m * p_.speed_per_momentum, p_.max_speed_mps) * p_.velocity_scale;
+}
+
+void SplashSheet::reset(glm::vec2 centre_xz, const WaveGrid& grid, float sea_level_m) {
+    centre_ = centre_xz;
+    flying_ = 0;
+    for (int j = 0; j < n_; ++j)
+        for (int i = 0; i < n_; ++i) {
+            size_t idx = size_t(j) * size_t(n_) + size_t(i);
+            glm::vec2 r = rest_xz(i, j);
+            pos_[idx] = {r.x, sea_level_m + grid.sample(r) - p_.hidden_depth_m, r.y};
+            vel_[idx] = glm::vec3(0.0f);
+            airborne_[idx] = 0;
+        }
+}
+
+void SplashSheet::launch(size_t idx, glm::vec3 velocity, const WaveGrid& grid, float sea_level_m) {
+    const int i = int(idx % size_t(n_)), j = int(idx / size_t(n_));
+    glm::vec2 r = rest_xz(i, j);
+    // Leaves from the surface itself, so even a weak splash shows for a moment.
+    pos_[idx] = {r.x, sea_level_m + grid.sample(r), r.y};
+    vel_[idx] = velocity;
+    airborne_[idx] = 1;
+    ++flying_;
+}
+
+int SplashSheet::first_splash(float object_radius_m, float momentum_kgmps, Rng& rng, const WaveGrid& grid,
+                              float sea_level_m, std::optional<glm::vec2> ahead, glm::vec2 carry_xz) {
+    const Band band = ring_band(object_radius_m);
+    const float s = launch_speed(momentum_kgmps);
+    const int half = n_ / 2;
+    // The seed draws alpha in [0.1, 1] independently per vertex; neighbours then fly
+    // apart into shards. Half of alpha here varies smoothly round the ring (random
+    // phases per splash), half per vertex: still in [0.1, 1], but the crown holds
+    // together as a sheet with a ragged rim.
+    const float phase1 = rng.range(0.0f, 6.2831853f), phase2 = rng.range(0.0f, 6.2831853f);
+    int launched = 0;
+    for (int dj = -band.outer; dj <= band.outer; ++dj)
+        for (int di = -band.outer; di <= band.outer; ++di) {
+            const int ring = std::max(std::abs(di), std::abs(dj));
+            if (ring < band.inner) continue;
+            if (ahead && float(di) * ahead->x + float(dj) * ahead->y < 0.0f) continue;  // behind: seed 4.2.4
+            const size_t idx = size_t(half + dj) * size_t(n_) + size_t(half + di);
+            if (airborne_[idx]) continue;
+            const float theta = std::atan2(float(dj), float(di));
+            const float smooth = 0.55f + 0.3f * std::sin(3.0f * theta + phase1) + 0.15f * std::sin(7.0f * theta + phase2);
+            const float a = (0.5f * smooth + 0.5f * rng.range(0.1f, 1.0f)) * s;
+            glm::vec3 v(0.0f, a, 0.0f);
+            if (std::abs(di) == std::abs(dj)) {  // diagonal: half speed on each axis
+                v.x = sign_of(di) * a * 0.5f;
+                v.z = sign_of(dj) * a * 0.5f;
+            } else if (std::abs(di) > std::abs(dj)) {
+                v.x = sign_of(di) * a;
+            } else {
+                v.z = sign_of(dj) * a;
+            }
+            v.x += carry_xz.x;
+            v.z += carry_xz.y;
+            launch(idx, v, grid, sea_level_m);
+            ++launched;
+        }
+    return launched;
+}
+
+int SplashSheet::second_splash(float object_radius_m, float momentum_kgmps, Rng& rng, const WaveGrid& grid,
+                               float sea_level_m) {
+    const int patch = std::max(1, ring_band(object_radius_m).outer / 2);
+    const float s = launch_speed(momentum_kgmps);
+    const int half = n_ / 2;
+    int launched = 0;
+    for (int dj = -patch; dj <= patch; ++dj)
+        for (int di = -patch; di <= patch; ++di) {
+            const size_t idx = size_t(half + dj) * size_t(n_) + size_t(half + di);
+            if (airborne_[idx]) continue;
+            const int ring = std::max(std::abs(di), std::abs(dj));
+            const float up = (0.75f + 0.25f * rng.range(0.1f, 1.0f)) * s * (1.0f - 0.4f * float(ring) / float(patch));
+            glm::vec3 v(0.0f, up, 0.0f);
+            if (ring > 0) {  // a slight outward lean keeps the column from being a needle
+                float len = std::sqrt(float(di * di + dj * dj));
+                v.x = 0.1f * up * float(di) / len;
+                v.z = 0.1f * up * float(dj) / len;
+            }
+            launch(idx, v, grid, sea_level_m);
+            ++launched;
+        }
+    return launched;
+}
+
+void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples) {
+    if (flying_ == 0) return;  // nothing to show: hidden vertices need not follow
+    const float g = p_.gravity_mps2;
+    for (int j = 0; j < n_; ++j)
+        for (int i = 0; i < n_; ++i) {
+            const size_t idx = size_t(j) * size_t(n_) + size_t(i);
+            if (airborne_[idx]) {
+                glm::vec3& v = vel_[idx];
+                glm::vec3& p = pos_[idx];
+                v.y -= g * dt;
+                p += v * dt;
+                if (v.y < 0.0f && p.y < sea_level_m + grid.sample({p.x, p.z})) {
+                    ripples.push_back({{p.x, p.z}, p_.ripple_depth_m});
+                    airborne_[idx] = 0;
+                    v = glm::vec3(0.0f);
+                    --flying_;
+                } else {
+                    continue;
+                }
+            }
+            glm::vec2 r = rest_xz(i, j);
+            pos_[idx] = {r.x, sea_level_m + grid.sample(r) - p_.hidden_depth_m, r.y};
+        }
+}
+
+uint64_t SplashSheet::hash() const {
+    Hasher h;
+    h.vec(centre_);
+    h.i32(flying_);
+    uint64_t v = hash_combine(h.value(), hash_words(pos_.data(), pos_.size() * sizeof(glm::vec3), 11));
+    v = hash_combine(v, hash_words(vel_.data(), vel_.size() * sizeof(glm::vec3), 12));
+    return hash_combine(v, hash_words(airborne_.data(), airborne_.size(), 13));
+}
+
+}  // namespace sim

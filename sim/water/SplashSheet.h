@@ -1,0 +1,111 @@
+#pragma once
+// The seed's splash model (seed 003, 4.1-4.2): a patch of vertices finer than the wave
+// grid, centred on an impact and kept just below the surface, so it is hidden until
+// displaced. A splash gives some vertices initial velocities; they fly ballistically
+// and, when they fall back below the surface, hide again and leave a ripple.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "sim/core/Rng.h"
+#include "sim/water/WaveGrid.h"
+
+namespace sim {
+
+struct SplashSheetParams {
+    int size = 40;                 // vertices per side (3..256)
+    float spacing_m = 0.08f;       // d
+    float hidden_depth_m = 0.03f;  // how far below the surface a hidden vertex waits
+    float velocity_scale = 1.0f;   // artistic multiplier on every launch speed
+    // The seed launches vertices at alpha * M * V (kg m/s read as m/s): for a 116 kg
+    // stone at 12 m/s that is kilometres per second. This converts impact momentum to
+    // launch speed so such a stone throws a crown two to three metres high (7 m/s at
+    // alpha 1), as a boulder that size would.
+    float speed_per_momentum = 0.005f;  // (m/s) per (kg m/s)
+    float max_speed_mps = 8.0f;    // cap for huge momenta (the boat): about 3 m high
+    float gravity_mps2 = 9.81f;
+    float ripple_depth_m = 0.004f; // wave-grid push where a vertex falls back in
+};
+
+// Something fell back into the water here: the caller pushes the wave grid.
+struct Ripple {
+    glm::vec2 xz{0.0f};
+    float depth_m = 0.0f;
+};
+
+class SplashSheet {
+public:
+    // Throws std::invalid_argument for absurd parameters.
+    explicit SplashSheet(const SplashSheetParams& params);
+
+    bool active() const { return flying_ > 0; }  // some vertex is still in the air
+    glm::vec2 centre_xz() const { return centre_; }
+    int size() const { return n_; }
+    float spacing() const { return p_.spacing_m; }
+    // World positions, size*size, row-major like the grid (index j*size + i, i along x).
+    const std::vector<glm::vec3>& positions() const { return pos_; }
+    // 1 where the vertex is in the air (launched and not yet fallen back below the
+    // surface): the renderer draws triangles whose 3 vertices are airborne.
+    const std::vector<uint8_t>& airborne() const { return airborne_; }
+    const std::vector<glm::vec3>& velocities() const { return vel_; }
+    int airborne_count() const { return flying_; }
+    const SplashSheetParams& params() const { return p_; }
+    uint64_t hash() const;
+
+    // Vertex (i, j) rests at centre + (i - size/2, j - size/2) * spacing: the centre is a vertex.
+    glm::vec2 rest_xz(int i, int j) const;
+    // Seed 4.2.2: the splash ring is the band of vertices at Chebyshev distance
+    // inner..outer (in cells) from the centre, at the object's rim: outer = its radius
+    // in cells (at least 1), width growing with it. Diameter 2d -> the 8 vertices
+    // around the centre; 4d -> the 16 of the next ring; wider objects a wider band.
+    struct Band {
+        int inner, outer;
+    };
+    Band ring_band(float object_radius_m) const;
+    // alpha M V turned into metres per second (speed_per_momentum, velocity_scale, cap).
+    float launch_speed(float momentum_kgmps) const;
+
+    // Centres the sheet on xz with every vertex hidden just below the surface.
+    void reset(glm::vec2 centre_xz, const WaveGrid& grid, float sea_level_m);
+    // Moves where the hidden vertices rest (the bow sheet rides ahead of the bow);
+    // vertices in the air fly on.
+    void move_to(glm::vec2 centre_xz) { centre_ = centre_xz; }
+
+    // First splash (seed eqs. 4.1-4.3): each hidden vertex of the ring band leaves
+    // from the surface with alpha uniform in [0.1, 1] (one per vertex, from rng):
+    // vertical speed alpha*s, horizontal away from the centre, alpha*s along an axis
+    // and alpha*s/2 per axis on the diagonals (s = launch_speed(M V)). With `ahead`
+    // (unit xz direction of a moving object) vertices behind the centre are left
+    // alone (seed 4.2.4, the bow spray) and `carry_xz` (the object's velocity) is
+    // added, so the rule holds in the moving object's frame and the sheet stays
+    // whole around the bow instead of stretching back along its path. Returns how
+    // many vertices were launched.
+    int first_splash(float object_radius_m, float momentum_kgmps, Rng& rng, const WaveGrid& grid,
+                     float sea_level_m, std::optional<glm::vec2> ahead = std::nullopt,
+                     glm::vec2 carry_xz = glm::vec2(0.0f));
+    // Second splash (seed eq. 4.4) after the crater refills: a near-vertical jet from
+    // a small central patch (the seed's single vertex looked coarse), alpha*s upward,
+    // weaker towards the patch edge, with a slight outward lean. Returns the count.
+    int second_splash(float object_radius_m, float momentum_kgmps, Rng& rng, const WaveGrid& grid,
+                      float sea_level_m);
+
+    // Ballistic flight under gravity; a vertex that falls back below the surface hides
+    // again at its rest point and adds a Ripple where it fell. Hidden vertices follow
+    // the surface while the sheet is active.
+    void step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples);
+
+private:
+    void launch(size_t idx, glm::vec3 velocity, const WaveGrid& grid, float sea_level_m);
+
+    SplashSheetParams p_;
+    int n_;
+    glm::vec2 centre_{0.0f};
+    std::vector<glm::vec3> pos_, vel_;
+    std::vector<uint8_t> airborne_;
+    int flying_ = 0;
+};
+
+}  // namespace sim

@@ -1,0 +1,241 @@
+#include "sim/water/WaveGrid.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "sim/core/Hash.h"
+
+namespace sim {
+
+namespace {
+
+constexpr float kPi = 3.14159265f;
+// Heights this small are flushed to 0: the scheme's numerical fronts and long damped
+// tails would otherwise fill the grid with subnormal floats, which x86 handles ~100x
+// slower (and the sim must not change the FPU's flush modes).
+constexpr float kFlush_m = 1e-30f;
+
+inline float flushed(float y) { return std::fabs(y) < kFlush_m ? 0.0f : y; }
+
+std::string num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+[[noreturn]] void refuse(const std::string& what) { throw std::invalid_argument("WaveGrid: " + what); }
+
+constexpr uint64_t kP1 = 0x9E3779B185EBCA87ull;
+constexpr uint64_t kP2 = 0xC2B2AE3D27D4EB4Full;
+constexpr uint64_t kP3 = 0x165667B19E3779F9ull;
+
+inline uint64_t mix_round(uint64_t lane, uint64_t word) { return std::rotl(lane + word * kP2, 31) * kP1; }
+
+inline uint64_t load64(const unsigned char* p) {
+    uint64_t w;
+    std::memcpy(&w, p, sizeof w);
+    return w;
+}
+
+}  // namespace
+
+uint64_t hash_words(const void* data, size_t bytes, uint64_t seed) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    uint64_t a = seed + kP1 + kP2, b = seed + kP2, c = seed, d = seed - kP1;
+    size_t i = 0;
+    for (; i + 32 <= bytes; i += 32) {
+        a = mix_round(a, load64(p + i));
+        b = mix_round(b, load64(p + i + 8));
+        c = mix_round(c, load64(p + i + 16));
+        d = mix_round(d, load64(p + i + 24));
+    }
+    uint64_t h = std::rotl(a, 1) + std::rotl(b, 7) + std::rotl(c, 12) + std::rotl(d, 18);
+    for (; i + 8 <= bytes; i += 8) h = std::rotl(h ^ mix_round(0, load64(p + i)), 27) * kP1 + kP3;
+    for (; i < bytes; ++i) h = std::rotl(h ^ (uint64_t(p[i]) * kP3), 11) * kP1;
+    h ^= uint64_t(bytes);
+    h ^= h >> 33;
+    h *= kP2;
+    h ^= h >> 29;
+    h *= kP3;
+    h ^= h >> 32;
+    return h;
+}
+
+WaveGrid::WaveGrid(const WaveGridParams& p, float dt_s) {
+    if (p.size < 8 || p.size > 2048) refuse("size must be 8..2048 cells per side, got " + std::to_string(p.size));
+    if (!std::isfinite(p.spacing_m) || p.spacing_m <= 0.0f)
+        refuse("spacing_m must be a positive number of metres, got " + num(p.spacing_m));
+    if (!std::isfinite(p.wave_speed_mps) || p.wave_speed_mps <= 0.0f)
+        refuse("wave_speed_mps must be positive, got " + num(p.wave_speed_mps));
+    if (!std::isfinite(dt_s) || dt_s <= 0.0f) refuse("time step must be positive, got " + num(dt_s) + " s");
+    if (!(p.damping_per_s >= 0.0f && p.damping_per_s < 1.0f))
+        refuse("damping_per_s is the fraction of wave motion lost per second and must be in [0, 1), got " +
+               num(p.damping_per_s));
+    if (!std::isfinite(p.origin_xz.x) || !std::isfinite(p.origin_xz.y)) refuse("origin_xz must be finite");
+    const double c = double(p.wave_speed_mps) * p.wave_speed_mps * dt_s * dt_s / (double(p.spacing_m) * p.spacing_m);
+    if (c > 0.5)
+        refuse("unstable parameters: the explicit scheme needs c = v^2 dt^2 / h^2 <= 0.5, but v = " +
+               num(p.wave_speed_mps) + " m/s, dt = " + num(dt_s) + " s, h = " + num(p.spacing_m) + " m give c = " +
+               num(c) + " (lower the wave speed or raise the spacing)");
+    size_ = p.size;
+    h_ = p.spacing_m;
+    origin_ = p.origin_xz;
+    c_ = float(c);
+    damp_ = float(std::pow(1.0 - double(p.damping_per_s), double(dt_s)));
+    const size_t n = size_t(size_) * size_t(size_);
+    cur_.assign(n, 0.0f);
+    prev_.assign(n, 0.0f);
+    land_.assign(n, 0);
+    rebuild_coefficients();
+}
+
+void WaveGrid::rebuild_coefficients() {
+    const int n = size_;
+    centre_weight_.resize(land_.size());
+    row_general_.assign(size_t(n), 0);
+    auto water = [&](int i, int j) { return i >= 0 && j >= 0 && i < n && j < n && !land_[size_t(j) * n + i]; };
+    std::vector<uint8_t> row_has_land(size_t(n), 0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            size_t idx = size_t(j) * n + i;
+            int k = int(water(i - 1, j)) + int(water(i + 1, j)) + int(water(i, j - 1)) + int(water(i, j + 1));
+            centre_weight_[idx] = 2.0f - float(k) * c_;
+            if (land_[idx]) row_has_land[size_t(j)] = 1;
+        }
+    for (int j = 0; j < n; ++j) {
+        bool edge = j == 0 || j == n - 1;
+        bool near_land = row_has_land[size_t(j)] || (j > 0 && row_has_land[size_t(j) - 1]) ||
+                         (j + 1 < n && row_has_land[size_t(j) + 1]);
+        row_general_[size_t(j)] = uint8_t(edge || near_land);
+    }
+}
+
+void WaveGrid::step_rows(size_t row_begin, size_t row_end) {
+    const size_t n = size_t(size_);
+    const float* __restrict y = cur_.data();
+    float* __restrict out = prev_.data();  // holds y[n-1]; becomes y[n+1] in place, cell by cell
+    const float c = c_, damp = damp_;
+    const float w3 = 2.0f - 3.0f * c, w4 = 2.0f - 4.0f * c;
+    for (size_t j = row_begin; j < row_end; ++j) {
+        const size_t row = j * n;
+        if (!row_general_[j]) {
+            // Interior row with no land near: the tight loop, edges k = 3.
+            const float* __restrict r = y + row;
+            const float* __restrict up = r - n;
+            const float* __restrict dn = r + n;
+            float* __restrict o = out + row;
+            o[0] = flushed(damp * (c * (r[1] + (up[0] + dn[0])) + w3 * r[0] - o[0]));
+            for (size_t i = 1; i + 1 < n; ++i)
+                o[i] = flushed(damp * (c * ((r[i - 1] + r[i + 1]) + (up[i] + dn[i])) + w4 * r[i] - o[i]));
+            o[n - 1] = flushed(damp * (c * (r[n - 2] + (up[n - 1] + dn[n - 1])) + w3 * r[n - 1] - o[n - 1]));
+            continue;
+        }
+        for (size_t i = 0; i < n; ++i) {
+            const size_t idx = row + i;
+            if (land_[idx]) {
+                out[idx] = 0.0f;
+                continue;
+            }
+            // Missing neighbours (outside, or land pinned at 0) add nothing; their
+            // absence is in the centre weight 2 - k c.
+            float l = i > 0 ? y[idx - 1] : 0.0f;
+            float rt = i + 1 < n ? y[idx + 1] : 0.0f;
+            float u = j > 0 ? y[idx - n] : 0.0f;
+            float d = j + 1 < n ? y[idx + n] : 0.0f;
+            out[idx] = flushed(damp * (c * ((l + rt) + (u + d)) + centre_weight_[idx] * y[idx] - out[idx]));
+        }
+    }
+}
+
+void WaveGrid::step() {
+    step_rows(0, size_t(size_));
+    std::swap(cur_, prev_);
+}
+
+void WaveGrid::step(JobPool& jobs) {
+    jobs.parallel_for(size_t(size_), [this](size_t b, size_t e) { step_rows(b, e); });
+    std::swap(cur_, prev_);
+}
+
+float WaveGrid::sample(glm::vec2 xz) const {
+    float fx = (xz.x - origin_.x) / h_, fz = (xz.y - origin_.y) / h_;
+    const float last = float(size_ - 1);
+    if (!(fx >= 0.0f && fx <= last && fz >= 0.0f && fz <= last)) return 0.0f;  // also NaN
+    int i = std::min(int(fx), size_ - 2), j = std::min(int(fz), size_ - 2);
+    float tx = fx - float(i), tz = fz - float(j);
+    const float* r0 = cur_.data() + size_t(j) * size_t(size_) + size_t(i);
+    const float* r1 = r0 + size_;
+    float a = r0[0] + (r0[1] - r0[0]) * tx;
+    float b = r1[0] + (r1[1] - r1[0]) * tx;
+    return a + (b - a) * tz;
+}
+
+glm::vec3 WaveGrid::normal(glm::vec2 xz) const {
+    float dx = (sample({xz.x + h_, xz.y}) - sample({xz.x - h_, xz.y})) / (2.0f * h_);
+    float dz = (sample({xz.x, xz.y + h_}) - sample({xz.x, xz.y - h_})) / (2.0f * h_);
+    float len = std::sqrt(dx * dx + 1.0f + dz * dz);
+    return {-dx / len, 1.0f / len, -dz / len};
+}
+
+void WaveGrid::push(glm::vec2 xz, float radius_m, float depth_m) {
+    if (!std::isfinite(xz.x) || !std::isfinite(xz.y) || !std::isfinite(radius_m) || !std::isfinite(depth_m))
+        refuse("push needs finite position, radius and depth, got (" + num(xz.x) + ", " + num(xz.y) + "), " +
+               num(radius_m) + " m, " + num(depth_m) + " m");
+    const float r = std::max(radius_m, h_);
+    const float fx = (xz.x - origin_.x) / h_, fz = (xz.y - origin_.y) / h_, fr = r / h_;
+    const float last = float(size_ - 1);
+    if (fx + fr < 0.0f || fz + fr < 0.0f || fx - fr > last || fz - fr > last) return;
+    const int i0 = std::max(0, int(std::ceil(fx - fr))), i1 = std::min(size_ - 1, int(std::floor(fx + fr)));
+    const int j0 = std::max(0, int(std::ceil(fz - fr))), j1 = std::min(size_ - 1, int(std::floor(fz + fr)));
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            size_t idx = size_t(j) * size_t(size_) + size_t(i);
+            if (land_[idx]) continue;
+            float ddx = float(i) - fx, ddz = float(j) - fz;
+            float d = std::sqrt(ddx * ddx + ddz * ddz) / fr;
+            if (d >= 1.0f) continue;
+            float w = 0.5f * (1.0f + std::cos(kPi * d));
+            cur_[idx] = flushed(cur_[idx] - depth_m * w);
+            prev_[idx] = flushed(prev_[idx] - depth_m * w);
+        }
+}
+
+void WaveGrid::set_heights(const std::vector<float>& heights) {
+    if (heights.size() != cur_.size())
+        refuse("set_heights needs " + std::to_string(cur_.size()) + " heights (size^2), got " +
+               std::to_string(heights.size()));
+    for (size_t i = 0; i < heights.size(); ++i) {
+        if (!std::isfinite(heights[i])) refuse("set_heights: height " + std::to_string(i) + " is not finite");
+        cur_[i] = prev_[i] = land_[i] ? 0.0f : flushed(heights[i]);
+    }
+}
+
+double WaveGrid::volume() const {
+    double sum = 0.0;
+    for (float y : cur_) sum += double(y);
+    return sum * double(h_) * double(h_);
+}
+
+void WaveGrid::set_land_mask(std::vector<uint8_t> mask) {
+    if (mask.size() != land_.size())
+        refuse("land mask needs " + std::to_string(land_.size()) + " cells (size^2), got " +
+               std::to_string(mask.size()));
+    for (uint8_t& m : mask) m = m ? 1 : 0;
+    land_ = std::move(mask);
+    for (size_t i = 0; i < land_.size(); ++i)
+        if (land_[i]) cur_[i] = prev_[i] = 0.0f;
+    rebuild_coefficients();
+}
+
+uint64_t WaveGrid::hash() const {
+    uint64_t h = hash_words(cur_.data(), cur_.size() * sizeof(float), 1);
+    h = hash_combine(h, hash_words(prev_.data(), prev_.size() * sizeof(float), 2));
+    return hash_combine(h, hash_words(land_.data(), land_.size(), 3));
+}
+
+}  // namespace sim

@@ -1,0 +1,523 @@
+// sim/water: the wave grid's physics, the seed's splash rules, spray, and the coupling
+// to thrown objects, the boat and rain in a small world built in code.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "SimTestLevel.h"
+#include "sim/objects/ThrownObjects.h"
+#include "sim/player/Player.h"
+#include "sim/vehicle/Boat.h"
+#include "sim/water/WaterSim.h"
+#include "sim/world/World.h"
+
+namespace {
+
+using sim::Control;
+using sim::TickInput;
+
+constexpr float kDt = 1.0f / 60.0f;
+
+std::string message_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "(no exception)";
+}
+
+// A grid with c = 1/4 (v = 15 m/s at h = 0.5 m): fronts move half a cell per tick.
+sim::WaveGridParams fast_grid(int size) {
+    sim::WaveGridParams p;
+    p.size = size;
+    p.spacing_m = 0.5f;
+    p.origin_xz = {0.0f, 0.0f};
+    p.wave_speed_mps = 15.0f;
+    p.damping_per_s = 0.0f;
+    return p;
+}
+
+std::vector<float> gaussian_bump(int size, float ci, float cj, float sigma_cells, float amplitude) {
+    std::vector<float> y(size_t(size) * size_t(size));
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            float dx = float(i) - ci, dz = float(j) - cj;
+            y[size_t(j) * size_t(size) + size_t(i)] =
+                amplitude * std::exp(-(dx * dx + dz * dz) / (2.0f * sigma_cells * sigma_cells));
+        }
+    return y;
+}
+
+TEST(WaveGrid, GaussianBumpWithoutDampingKeepsItsVolume) {
+    sim::WaveGrid g(fast_grid(128), kDt);
+    g.set_heights(gaussian_bump(128, 50.0f, 70.0f, 3.0f, 0.2f));
+    const double v0 = g.volume();
+    ASSERT_GT(v0, 0.5);
+    double worst = 0.0;
+    for (int t = 0; t < 400; ++t) {  // long enough to reflect off every edge
+        g.step();
+        worst = std::max(worst, std::fabs(g.volume() - v0) / v0);
+    }
+    EXPECT_LT(worst, 1e-3);
+    // The bump has really spread: the centre is far below its start.
+    EXPECT_LT(std::fabs(g.height(50, 70)), 0.05f);
+}
+
+// Radius (m) of the largest |height| along the four axis rays from the centre.
+float front_radius(const sim::WaveGrid& g, int c) {
+    float sum = 0.0f;
+    const int dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (const auto& d : dirs) {
+        int best = 0;
+        float peak = -1.0f;
+        for (int r = 1; r < c; ++r) {
+            float a = std::fabs(g.height(c + d[0] * r, c + d[1] * r));
+            if (a > peak) {
+                peak = a;
+                best = r;
+            }
+        }
+        sum += float(best);
+    }
+    return sum / 4.0f * g.spacing();
+}
+
+TEST(WaveGrid, RingFrontTravelsAtTheWaveSpeed) {
+    sim::WaveGrid g(fast_grid(256), kDt);
+    g.set_heights(gaussian_bump(256, 128.0f, 128.0f, 3.0f, 0.2f));
+    float r1 = 0.0f, r2 = 0.0f;
+    for (int t = 1; t <= 200; ++t) {
+        g.step();
+        if (t == 60) r1 = front_radius(g, 128);
+        if (t == 200) r2 = front_radius(g, 128);
+    }
+    const float speed = (r2 - r1) / (140.0f * kDt);
+    EXPECT_NEAR(speed, 15.0f, 1.5f) << "front at " << r1 << " m then " << r2 << " m";
+}
+
+TEST(WaveGrid, RefusesUnstableParametersNamingTheBound) {
+    sim::WaveGridParams p;
+    p.wave_speed_mps = 40.0f;  // c = 40^2 / 60^2 / 0.25 = 1.78
+    std::string msg = message_of([&] { sim::WaveGrid g(p, kDt); });
+    EXPECT_NE(msg.find("c = v^2 dt^2 / h^2 <= 0.5"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("v = 40"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("h = 0.5"), std::string::npos) << msg;
+    p = {};
+    p.wave_speed_mps = 21.2f;  // c = 0.4993: just stable
+    EXPECT_NO_THROW(sim::WaveGrid(p, kDt));
+    p.wave_speed_mps = 21.3f;  // c = 0.504
+    EXPECT_THROW(sim::WaveGrid(p, kDt), std::invalid_argument);
+    p = {};
+    p.size = 4096;
+    EXPECT_NE(message_of([&] { sim::WaveGrid g(p, kDt); }).find("size must be 8..2048"), std::string::npos);
+    p = {};
+    p.damping_per_s = 1.5f;
+    EXPECT_NE(message_of([&] { sim::WaveGrid g(p, kDt); }).find("damping_per_s"), std::string::npos);
+    sim::WaveGrid ok({}, kDt);
+    EXPECT_THROW(ok.set_land_mask(std::vector<uint8_t>(10)), std::invalid_argument);
+    EXPECT_THROW(ok.push({NAN, 3.0f}, 1.0f, 0.1f), std::invalid_argument);
+}
+
+TEST(WaveGrid, SampleIsBilinearAndNormalTiltsAgainstTheSlope) {
+    sim::WaveGridParams p = fast_grid(16);
+    p.origin_xz = {-2.0f, 3.0f};
+    sim::WaveGrid g(p, kDt);
+    std::vector<float> ramp(16 * 16);
+    for (int j = 0; j < 16; ++j)
+        for (int i = 0; i < 16; ++i) ramp[size_t(j) * 16 + size_t(i)] = 0.1f * float(i) * 0.5f;  // 0.1 m per m in x
+    g.set_heights(ramp);
+    EXPECT_NEAR(g.sample({-2.0f + 1.25f, 3.0f + 2.1f}), 0.125f, 1e-6f);
+    EXPECT_EQ(g.sample({-2.5f, 4.0f}), 0.0f);  // outside
+    glm::vec3 n = g.normal({1.0f, 5.0f});
+    EXPECT_NEAR(n.x, -0.1f / std::sqrt(1.01f), 1e-4f);
+    EXPECT_NEAR(n.z, 0.0f, 1e-6f);
+    g.push({1.0f, 5.0f}, 1.0f, 0.05f);
+    EXPECT_LT(g.sample({1.0f, 5.0f}), 0.3f - 0.04f);     // pushed down there
+    EXPECT_NEAR(g.sample({4.0f, 5.0f}), 0.6f, 1e-6f);    // untouched further away
+}
+
+TEST(WaveGrid, LandStaysPinnedAndReflectsAndThreadsAgree) {
+    sim::WaveGridParams p = fast_grid(64);
+    p.damping_per_s = 0.2f;
+    sim::WaveGrid a(p, kDt), b(p, kDt);
+    std::vector<uint8_t> land(64 * 64, 0);
+    for (int j = 0; j < 20; ++j)
+        for (int i = 0; i < 64; ++i) land[size_t(j) * 64 + size_t(i)] = 1;  // a quay along z
+    for (int i = 30; i < 34; ++i) land[size_t(40) * 64 + size_t(i)] = 1;    // and a pier head
+    a.set_land_mask(land);
+    b.set_land_mask(land);
+    a.set_heights(gaussian_bump(64, 32.0f, 30.0f, 2.0f, 0.3f));
+    b.set_heights(gaussian_bump(64, 32.0f, 30.0f, 2.0f, 0.3f));
+    sim::JobPool pool(3);
+    for (int t = 0; t < 150; ++t) {
+        a.step();
+        b.step(pool);
+    }
+    EXPECT_EQ(a.heights(), b.heights());
+    EXPECT_EQ(a.hash(), b.hash());
+    for (size_t k = 0; k < land.size(); ++k)
+        if (land[k]) {
+            ASSERT_EQ(a.heights()[k], 0.0f) << "land cell " << k;
+        }
+    double moving = 0.0;
+    for (int i = 0; i < 64; ++i) moving += std::fabs(a.height(i, 21));
+    EXPECT_GT(moving, 1e-3);  // waves reached the quay
+    b.step();
+    EXPECT_NE(a.hash(), b.hash());
+}
+
+TEST(SplashSheet, FirstSplashFollowsTheSeedsRing) {
+    sim::SplashSheetParams p;
+    sim::WaveGrid flat({}, kDt);
+    sim::Rng rng(3);
+    for (int rings : {1, 2}) {
+        sim::SplashSheet s(p);
+        s.reset({10.0f, 20.0f}, flat, 0.0f);
+        const float radius = float(rings) * p.spacing_m;  // diameter 2d, then 4d
+        const float momentum = 1000.0f;
+        const float top = s.launch_speed(momentum);
+        EXPECT_NEAR(top, momentum * p.speed_per_momentum, 1e-4f);
+        EXPECT_EQ(s.first_splash(radius, momentum, rng, flat, 0.0f), rings == 1 ? 8 : 16);
+        EXPECT_TRUE(s.active());
+        const int half = s.size() / 2;
+        for (int j = 0; j < s.size(); ++j)
+            for (int i = 0; i < s.size(); ++i) {
+                size_t idx = size_t(j) * size_t(s.size()) + size_t(i);
+                int di = i - half, dj = j - half;
+                bool on_ring = std::max(std::abs(di), std::abs(dj)) == rings;
+                ASSERT_EQ(s.airborne()[idx], on_ring ? 1 : 0) << di << "," << dj;
+                if (!on_ring) continue;
+                glm::vec3 v = s.velocities()[idx];
+                EXPECT_GE(v.y, 0.1f * top - 1e-5f);
+                EXPECT_LE(v.y, top);
+                if (std::abs(di) == std::abs(dj)) {  // diagonal: half on each axis, outward
+                    EXPECT_FLOAT_EQ(v.x, float(di > 0 ? 1 : -1) * 0.5f * v.y);
+                    EXPECT_FLOAT_EQ(v.z, float(dj > 0 ? 1 : -1) * 0.5f * v.y);
+                } else if (std::abs(di) > std::abs(dj)) {
+                    EXPECT_FLOAT_EQ(v.x, float(di > 0 ? 1 : -1) * v.y);
+                    EXPECT_EQ(v.z, 0.0f);
+                } else {
+                    EXPECT_EQ(v.x, 0.0f);
+                    EXPECT_FLOAT_EQ(v.z, float(dj > 0 ? 1 : -1) * v.y);
+                }
+                EXPECT_NEAR(s.positions()[idx].x, 10.0f + float(di) * p.spacing_m, 1e-4f);
+            }
+    }
+    // A half-metre stone gets a band two vertices wide: a crown with whole triangles.
+    sim::SplashSheet s(p);
+    sim::SplashSheet::Band b = s.ring_band(0.22f);
+    EXPECT_EQ(b.outer, 3);
+    EXPECT_EQ(b.inner, 2);
+    EXPECT_LT(s.launch_speed(1e9f), p.max_speed_mps + 1e-4f);
+}
+
+TEST(SplashSheet, BowSplashLeavesTheVerticesBehindAlone) {
+    sim::SplashSheet s({});
+    sim::WaveGrid flat({}, kDt);
+    sim::Rng rng(5);
+    s.reset({0.0f, 50.0f}, flat, 0.0f);
+    const glm::vec2 ahead = glm::normalize(glm::vec2(1.0f, 0.5f));
+    int n = s.first_splash(0.6f, 1500.0f, rng, flat, 0.0f, ahead);
+    EXPECT_GT(n, 40);
+    int half = s.size() / 2;
+    for (int j = 0; j < s.size(); ++j)
+        for (int i = 0; i < s.size(); ++i)
+            if (s.airborne()[size_t(j) * size_t(s.size()) + size_t(i)]) {
+                EXPECT_GE(float(i - half) * ahead.x + float(j - half) * ahead.y, 0.0f);
+            }
+    // Only hidden vertices are launched again: a second call right away adds nothing.
+    EXPECT_EQ(s.first_splash(0.6f, 1500.0f, rng, flat, 0.0f, ahead), 0);
+}
+
+TEST(SplashSheet, VerticesFallBackBelowTheSurfaceAndRipple) {
+    sim::SplashSheet s({});
+    sim::WaveGrid flat({}, kDt);
+    sim::Rng rng(9);
+    s.reset({5.0f, 30.0f}, flat, 0.0f);
+    int launched = s.first_splash(0.22f, 1400.0f, rng, flat, 0.0f);
+    launched += s.second_splash(0.22f, 1400.0f, rng, flat, 0.0f);
+    std::vector<sim::Ripple> ripples;
+    float highest = 0.0f;
+    int ticks = 0;
+    while (s.active() && ticks < 600) {
+        s.step(kDt, flat, 0.0f, ripples);
+        for (const glm::vec3& p : s.positions()) highest = std::max(highest, p.y);
+        ++ticks;
+    }
+    EXPECT_LT(ticks, 120);  // back within two seconds
+    EXPECT_GT(highest, 0.3f);  // but it really rose
+    EXPECT_EQ(int(ripples.size()), launched);
+    for (const glm::vec3& p : s.positions()) ASSERT_NEAR(p.y, -s.params().hidden_depth_m, 1e-6f);
+    for (uint8_t a : s.airborne()) ASSERT_EQ(a, 0);
+}
+
+TEST(SprayParticles, FlyOutwardAndUpThenLandWithARipple) {
+    sim::SprayParams p;
+    p.max_particles = 500;
+    sim::SprayParticles spray(p);
+    sim::WaveGrid flat({}, kDt);
+    sim::Rng rng(11);
+    const glm::vec3 centre(10.0f, 0.0f, 40.0f);
+    EXPECT_EQ(spray.emit_splash(centre, 0.3f, {6.0f, -9.0f, 2.0f}, 300, rng), 300);
+    for (const sim::SprayParticle& q : spray.particles()) {
+        glm::vec2 out(q.position.x - centre.x, q.position.z - centre.z);
+        EXPECT_NEAR(glm::length(out), 0.3f, 1e-4f);
+        EXPECT_GT(q.velocity.x * out.x + q.velocity.z * out.y, 0.0f);
+        EXPECT_GE(q.velocity.y, 0.5f * 0.25f * 17.0f - 1e-4f);
+    }
+    EXPECT_EQ(spray.emit_splash(centre, 0.3f, {6.0f, -9.0f, 2.0f}, 300, rng), 200);  // up to the cap
+    std::vector<sim::Ripple> ripples;
+    sim::JobPool pool(2);
+    for (int t = 0; t < 300 && !spray.particles().empty(); ++t) spray.step(kDt, flat, 0.0f, ripples, &pool);
+    EXPECT_TRUE(spray.particles().empty());
+    EXPECT_EQ(ripples.size(), 500u);
+    EXPECT_THROW(sim::SprayParticles(sim::SprayParams{.max_particles = size_t(1) << 40}), std::invalid_argument);
+}
+
+// A world from the code-built test level with a WaterSim added last and installed as
+// the sea (the standard subsystem list may or may not have one; this one is ours).
+struct Harbour {
+    sim::World world;
+    sim::WaterSim* water = nullptr;
+    explicit Harbour(sim::LevelDesc level, int threads = 1, sim::WaterParams params = {})
+        : world(std::move(level), {threads}) {
+        auto w = std::make_unique<sim::WaterSim>(params, world.level(), world.level().seed);
+        water = w.get();
+        world.add(std::move(w));
+        world.set_sea(water);
+    }
+};
+
+// Dropped (no throw speed) from 4 m above the sea, away from the pier.
+constexpr sim::ThrowKind kDroppedStone{0.22f, 2600.0f, 0.0f};
+constexpr sim::ThrowKind kDroppedFloat{0.30f, 240.0f, 0.0f};
+
+void drop(Harbour& h, const sim::ThrowKind& kind, glm::vec3 at) {
+    h.world.get<sim::ThrownObjects>().launch(kind, at, {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f});
+}
+
+TEST(Water, HeavyObjectSplashesTwiceInOrderAndSinksToTheBottom) {
+    Harbour h(make_test_level());
+    drop(h, kDroppedStone, {50.0f, 4.0f, 20.0f});
+    int first = -1, second = -1, firsts = 0, seconds = 0;
+    float dip = 0.0f, highest = 0.0f;
+    size_t spray = 0;
+    for (int t = 0; t < 600; ++t) {
+        h.world.step({});
+        for (const sim::SplashEvent& e : h.water->splashes()) {
+            if (e.kind == sim::SplashEvent::Kind::First) {
+                first = t;
+                ++firsts;
+                dip = h.water->grid().sample({e.position.x, e.position.z});
+            } else {
+                second = t;
+                ++seconds;
+            }
+        }
+        for (const sim::SplashSheet& s : h.water->sheets())
+            for (size_t k = 0; k < s.positions().size(); ++k)
+                if (s.airborne()[k]) highest = std::max(highest, s.positions()[k].y);
+        spray = std::max(spray, h.water->spray().particles().size());
+    }
+    ASSERT_EQ(firsts, 1);
+    ASSERT_EQ(seconds, 1);
+    EXPECT_GT(second, first);
+    EXPECT_GE(second - first, 15);  // the crater refills in 0.25..0.4 s
+    EXPECT_LE(second - first, 24);
+    EXPECT_LT(dip, -0.02f);  // the surface dipped where it went in
+    EXPECT_GT(highest, 0.2f);
+    EXPECT_LT(highest, 3.0f);  // metres, not kilometres
+    const sim::ThrownObject& stone = h.world.get<sim::ThrownObjects>().objects().at(0);
+    EXPECT_NEAR(stone.position.y, -6.0f + stone.radius_m, 0.02f);
+    EXPECT_GT(spray, 100u);  // a stone of ~110 kg at ~9 m/s: 0.2 droplets per kg m/s
+}
+
+TEST(Water, LightObjectSplashesOnceFloatsAndRidesTheWaves) {
+    Harbour h(make_test_level());
+    drop(h, kDroppedFloat, {50.0f, 4.0f, 20.0f});
+    int firsts = 0, seconds = 0;
+    auto run = [&](int ticks) {
+        for (int t = 0; t < ticks; ++t) {
+            h.world.step({});
+            for (const sim::SplashEvent& e : h.water->splashes())
+                (e.kind == sim::SplashEvent::Kind::First ? firsts : seconds)++;
+        }
+    };
+    run(480);
+    EXPECT_EQ(firsts, 1);
+    EXPECT_EQ(seconds, 0);
+    const sim::ThrownObject& f = h.world.get<sim::ThrownObjects>().objects().at(0);
+    const float rest = f.position.y - h.water->height_at({f.position.x, f.position.z});
+    EXPECT_GT(rest, 0.0f);  // floating: centre above the surface, less than its radius
+    EXPECT_LT(rest, f.radius_m);
+    // A long wave (a surge pushed 6 m away) passes under it: it rises and falls with
+    // the surface, keeping its draught.
+    h.water->disturb({f.position.x + 6.0f, f.position.z}, 5.0f, 0.4f);
+    float lo = 1e9f, hi = -1e9f, worst = 0.0f;
+    for (int t = 0; t < 300; ++t) {
+        run(1);
+        const sim::ThrownObject& g = h.world.get<sim::ThrownObjects>().objects().at(0);
+        float water = h.water->height_at({g.position.x, g.position.z});
+        lo = std::min(lo, water);
+        hi = std::max(hi, water);
+        worst = std::max(worst, std::fabs(g.position.y - water - rest));
+    }
+    EXPECT_GT(hi - lo, 0.03f) << "not much of a wave";
+    EXPECT_LT(worst, 0.3f * (hi - lo)) << "the float does not follow the surface";
+    EXPECT_EQ(firsts, 1);
+    EXPECT_EQ(seconds, 0);
+}
+
+TEST(Water, SplashSheetsAllFallBackWithinSeconds) {
+    Harbour h(make_test_level());
+    drop(h, kDroppedStone, {45.0f, 4.0f, 25.0f});
+    drop(h, kDroppedFloat, {47.0f, 4.0f, 25.0f});
+    int last_splash = -1, t = 0;
+    bool any_airborne = false;
+    for (; t < 600; ++t) {
+        h.world.step({});
+        if (!h.water->splashes().empty()) last_splash = t;
+        bool active = false;
+        for (const sim::SplashSheet& s : h.water->sheets()) active = active || s.active();
+        any_airborne = any_airborne || active;
+        if (last_splash >= 0 && !active) break;
+    }
+    EXPECT_TRUE(any_airborne);
+    EXPECT_LT(t - last_splash, 180) << "sheets still in the air 3 s after the last splash";
+    for (const sim::SplashSheet& s : h.water->sheets()) {
+        for (size_t k = 0; k < s.positions().size(); ++k) ASSERT_EQ(s.airborne()[k], 0);
+    }
+}
+
+sim::LevelDesc level_with_car_by_the_boat() {
+    sim::LevelDesc l = make_test_level();
+    l.car_spawn.position = {36.0f, 1.0f, 30.0f};  // the player can step across to the boat
+    return l;
+}
+
+TEST(Water, BoatAtRestRidesAtItsWaterline) {
+    Harbour h(make_test_level());
+    const sim::Boat& boat = h.world.get<sim::Boat>();
+    for (int t = 0; t < 120; ++t) h.world.step({});
+    drop(h, kDroppedStone, {43.0f, 4.0f, 30.0f});  // waves running under the hull
+    drop(h, kDroppedStone, {40.0f, 4.0f, 35.0f});
+    float worst = 0.0f, swing = 0.0f;
+    for (int t = 0; t < 360; ++t) {
+        h.world.step({});
+        float water = 0.0f;
+        for (int k = 0; k < sim::Boat::kHullPoints; ++k) {
+            glm::vec2 hp = boat.hull_point(k);
+            glm::vec3 w = boat.position() + boat.pose().forward_flat() * hp.x + boat.pose().right_flat() * hp.y;
+            water += h.water->height_at({w.x, w.z}) / float(sim::Boat::kHullPoints);
+        }
+        worst = std::max(worst, std::fabs(boat.position().y - water));
+        swing = std::max(swing, std::fabs(water));
+    }
+    EXPECT_LT(worst, 0.03f);
+    EXPECT_GT(swing, 0.002f);  // the water under it did move
+    EXPECT_NEAR(boat.position().x, 40.0f, 0.05f);
+}
+
+TEST(Water, BoatAtSpeedThrowsContinuousBowSpray) {
+    Harbour h(level_with_car_by_the_boat());
+    h.world.step(TickInput{uint16_t(Control::SwitchVehicle)});
+    ASSERT_EQ(h.world.get<sim::Player>().vehicle(), sim::Vehicle::Boat);
+    TickInput throttle;
+    throttle.set(Control::Throttle, true);
+    int ticks_with_spray = 0, ticks_with_sheet = 0, fast_ticks = 0;
+    float behind = 0.0f;
+    for (int t = 0; t < 420; ++t) {
+        h.world.step(throttle);
+        if (h.world.get<sim::Boat>().speed_mps() < 4.0f) continue;
+        ++fast_ticks;
+        if (!h.water->spray().particles().empty()) ++ticks_with_spray;
+        int k = h.water->bow_sheet();
+        if (k < 0) continue;
+        const sim::SplashSheet& sheet = h.water->sheets()[size_t(k)];
+        if (sheet.airborne_count() > 0) ++ticks_with_sheet;
+        // The sheet rides at the bow: nothing of it trails behind along the path.
+        const sim::Pose& pose = h.world.get<sim::Boat>().pose();
+        glm::vec3 bow = pose.position + pose.forward_flat() * (0.5f * h.world.get<sim::Boat>().params().length_m);
+        for (size_t v = 0; v < sheet.positions().size(); ++v)
+            if (sheet.airborne()[v]) behind = std::max(behind, glm::dot(bow - sheet.positions()[v], pose.forward_flat()));
+    }
+    EXPECT_LT(behind, 1.0f);
+    ASSERT_GT(fast_ticks, 200);
+    EXPECT_EQ(ticks_with_spray, fast_ticks);
+    EXPECT_EQ(ticks_with_sheet, fast_ticks);
+    // Its wake: the water behind the boat moves.
+    glm::vec3 b = h.world.get<sim::Boat>().position();
+    float wake = 0.0f;
+    for (float back = 3.0f; back < 20.0f; back += 0.5f) wake = std::max(wake, std::fabs(h.water->height_at({b.x, b.z - back})));
+    EXPECT_GT(wake, 0.01f);
+}
+
+TEST(Water, RainDimplesTheSurfaceOnlyWhenItRains) {
+    sim::LevelDesc wet = make_test_level();
+    wet.rain_intensity = 1.0f;
+    Harbour dry(make_test_level()), rain(wet);
+    for (int t = 0; t < 60; ++t) {
+        dry.world.step({});
+        rain.world.step({});
+    }
+    const auto& still = dry.water->grid().heights();
+    EXPECT_TRUE(std::all_of(still.begin(), still.end(), [](float y) { return y == 0.0f; }));
+    const auto& dimpled = rain.water->grid().heights();
+    size_t moved = size_t(std::count_if(dimpled.begin(), dimpled.end(), [](float y) { return std::fabs(y) > 1e-5f; }));
+    EXPECT_GT(moved, 1000u);
+    EXPECT_LT(*std::max_element(dimpled.begin(), dimpled.end()), 0.01f);  // tiny
+}
+
+TEST(Water, LandCellsComeFromTheTerrain) {
+    sim::WaterParams p;
+    p.grid.origin_xz = {-40.0f, -10.0f};  // the grid reaches up onto the quay
+    sim::WaterSim w(p, make_test_level(), 1);
+    const sim::WaveGrid& g = w.grid();
+    EXPECT_EQ(g.land_mask()[size_t(0)], 1);                                // z = -10: land
+    EXPECT_EQ(g.land_mask()[size_t(19) * size_t(g.size())], 1);           // z = -0.5
+    EXPECT_EQ(g.land_mask()[size_t(22) * size_t(g.size())], 0);           // z = 1: sea
+    EXPECT_FLOAT_EQ(w.height_at({0.0f, 40.0f}), 0.0f);
+    p.max_sheets = 0;
+    std::string msg = message_of([&] { sim::WaterSim bad(p, make_test_level(), 1); });
+    EXPECT_NE(msg.find("max_sheets"), std::string::npos) << msg;
+    p = {};
+    p.grid.wave_speed_mps = 100.0f;
+    msg = message_of([&] { sim::WaterSim bad(p, make_test_level(), 1); });
+    EXPECT_NE(msg.find("<= 0.5"), std::string::npos) << msg;
+}
+
+// Boat driving with turns, both kinds of throws, rain: everything the water does.
+TickInput busy_input(uint32_t t) {
+    TickInput in;
+    in.set(Control::SwitchVehicle, t == 0);
+    in.set(Control::Throttle, t > 2 && (t / 150) % 3 != 2);
+    in.set(Control::Brake, (t / 150) % 3 == 2);
+    in.set((t / 100) % 2 ? Control::SteerLeft : Control::SteerRight, t % 100 < 30);
+    in.set(Control::ThrowHeavy, t % 23 == 3);
+    in.set(Control::ThrowLight, t % 29 == 7);
+    in.set(Control::RainUp, t % 200 == 5);
+    return in;
+}
+
+std::vector<uint64_t> water_hashes(int threads, uint32_t ticks) {
+    Harbour h(level_with_car_by_the_boat(), threads);
+    std::vector<uint64_t> out;
+    for (uint32_t t = 0; t < ticks; ++t) {
+        h.world.step(busy_input(t));
+        out.push_back(h.world.hash().world);
+    }
+    EXPECT_GT(h.water->spray().particles().size(), 10u);
+    return out;
+}
+
+TEST(Water, SameHashesForOneAndTwoThreads) {
+    auto one = water_hashes(1, 500);
+    auto two = water_hashes(2, 500);
+    ASSERT_EQ(one.size(), two.size());
+    for (size_t t = 0; t < one.size(); ++t) ASSERT_EQ(one[t], two[t]) << "first differs at tick " << t;
+}
+
+}  // namespace
