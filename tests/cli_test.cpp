@@ -128,6 +128,24 @@ TEST_F(Cli, BrokenLevelsAreRefused) {
     }
 }
 
+TEST_F(Cli, ALevelWithAnUnstableWaveGridIsRefused) {
+    const fs::path data = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path();
+    std::string json = read_file(data / "levels" / "harbour.json");
+    auto at = json.find("\"wave_speed_mps\": 2.5");
+    ASSERT_NE(at, std::string::npos);
+    json.replace(at, 21, "\"wave_speed_mps\": 50");
+    fs::create_directories(dir_ / "levels");
+    fs::create_directory_symlink(data / "levels" / "harbour", dir_ / "levels" / "harbour");
+    write_file(dir_ / "levels" / "harbour.json", json);
+    write_file(dir_ / "s.script", "0 hold\n10 end\n");
+    fs::path out = dir_ / "x.replay";
+    CommandResult r = run("record --level " + (dir_ / "levels" / "harbour.json").string() + " --script " +
+                          (dir_ / "s.script").string() + " --out " + out.string());
+    EXPECT_EQ(r.code, 3) << r.output;
+    EXPECT_NE(r.output.find("0.5"), std::string::npos) << "names the stability bound: " << r.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(Cli, CorruptReplaysAreRefusedWithOneMessage) {
     const std::string good = read_file(record(kShortScript, "good.replay"));
     ASSERT_GT(good.size(), 200u);

@@ -1,5 +1,7 @@
 #include "game/session/GameSession.h"
 
+#include <stdexcept>
+
 namespace game {
 
 GameSession GameSession::open(std::string_view level_name_or_path, int threads, std::optional<uint64_t> seed) {
@@ -7,7 +9,13 @@ GameSession GameSession::open(std::string_view level_name_or_path, int threads, 
     s.level = load_level(level_name_or_path);
     sim::LevelDesc desc = s.level.sim;
     if (seed) desc.seed = *seed;
-    s.world = std::make_unique<sim::World>(std::move(desc), sim::WorldOptions{threads});
+    try {
+        s.world = std::make_unique<sim::World>(std::move(desc), sim::WorldOptions{threads});
+    } catch (const std::invalid_argument& e) {
+        // The sim refuses parameters it cannot run (an unstable wave grid, say): that
+        // is the level's fault, reported against its file.
+        throw LevelError(s.level.path.string() + ": " + e.what());
+    }
     return s;
 }
 
