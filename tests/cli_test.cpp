@@ -69,6 +69,19 @@ protected:
         EXPECT_EQ(r.code, 0) << r.output;
         return out;
     }
+    // The harbour level copied as levels/NAME.json into the test's folder (its assets
+    // linked), with `from` replaced by `to` in the JSON; returns the JSON's path.
+    fs::path harbour_variant(const std::string& name, const std::string& from, const std::string& to) {
+        const fs::path data = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path();
+        std::string json = read_file(data / "levels" / "harbour.json");
+        auto at = json.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos) json.replace(at, from.size(), to);
+        fs::create_directories(dir_ / "levels");
+        fs::create_directory_symlink(data / "levels" / "harbour", dir_ / "levels" / name);
+        write_file(dir_ / "levels" / (name + ".json"), json);
+        return dir_ / "levels" / (name + ".json");
+    }
     static constexpr const char* kShortScript = "level harbour\n0 hold throttle\n100 tap throw_heavy\n150 hold\n200 end\n";
 };
 
@@ -129,18 +142,11 @@ TEST_F(Cli, BrokenLevelsAreRefused) {
 }
 
 TEST_F(Cli, ALevelWithAnUnstableWaveGridIsRefused) {
-    const fs::path data = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path();
-    std::string json = read_file(data / "levels" / "harbour.json");
-    auto at = json.find("\"wave_speed_mps\": 2.5");
-    ASSERT_NE(at, std::string::npos);
-    json.replace(at, 21, "\"wave_speed_mps\": 50");
-    fs::create_directories(dir_ / "levels");
-    fs::create_directory_symlink(data / "levels" / "harbour", dir_ / "levels" / "harbour");
-    write_file(dir_ / "levels" / "harbour.json", json);
+    fs::path level = harbour_variant("harbour", "\"wave_speed_mps\": 2.5", "\"wave_speed_mps\": 50");
     write_file(dir_ / "s.script", "0 hold\n10 end\n");
     fs::path out = dir_ / "x.replay";
-    CommandResult r = run("record --level " + (dir_ / "levels" / "harbour.json").string() + " --script " +
-                          (dir_ / "s.script").string() + " --out " + out.string());
+    CommandResult r = run("record --level " + level.string() + " --script " + (dir_ / "s.script").string() +
+                          " --out " + out.string());
     EXPECT_EQ(r.code, 3) << r.output;
     EXPECT_NE(r.output.find("0.5"), std::string::npos) << "names the stability bound: " << r.output;
     EXPECT_FALSE(fs::exists(out));
@@ -176,19 +182,12 @@ TEST_F(Cli, CorruptReplaysAreRefusedWithOneMessage) {
 }
 
 TEST_F(Cli, AReplayOfAnotherLevelIsRefused) {
-    // The same level under another name and with one prop moved: its content differs.
-    const fs::path data = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path();
-    std::string json = read_file(data / "levels" / "harbour.json");
-    auto at = json.find("\"id\": \"harbour\"");
-    ASSERT_NE(at, std::string::npos);
-    json.replace(at, 15, "\"id\": \"harbour2\"");
-    fs::create_directories(dir_ / "levels");
-    fs::create_directory_symlink(data / "levels" / "harbour", dir_ / "levels" / "harbour2");
-    write_file(dir_ / "levels" / "harbour2.json", json);
+    // The same level under another name: its content differs.
+    fs::path level = harbour_variant("harbour2", "\"id\": \"harbour\"", "\"id\": \"harbour2\"");
     write_file(dir_ / "s.script", "0 hold throttle\n60 end\n");
     fs::path rep = dir_ / "other.replay";
-    CommandResult rec = run("record --level " + (dir_ / "levels" / "harbour2.json").string() + " --script " +
-                  (dir_ / "s.script").string() + " --out " + rep.string());
+    CommandResult rec = run("record --level " + level.string() + " --script " + (dir_ / "s.script").string() +
+                            " --out " + rep.string());
     ASSERT_EQ(rec.code, 0) << rec.output;
     // Named by its id, the level is not among the bundled ones.
     CommandResult by_id = run("replay " + rep.string() + " --headless --frames none");
