@@ -43,4 +43,9 @@ inline uint64_t hash_combine(uint64_t a, uint64_t b) {
     return x ^ (x >> 31);
 }
 
+// A fast 64-bit hash of raw bytes (four independent multiply-rotate lanes, then a
+// final mix) for bulk state such as the water's grids, too much for byte-wise FNV.
+// Each round is a bijection of its lane, so any single changed word changes the hash.
+uint64_t hash_words(const void* data, size_t bytes, uint64_t seed = 0);
+
 }  // namespace sim

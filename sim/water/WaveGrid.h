@@ -78,9 +78,4 @@ private:
     std::vector<float> keep_;           // damping on water, 0 on land
 };
 
-// A fast 64-bit hash of raw bytes (four independent multiply-rotate lanes, then a
-// final mix): the water state is megabytes per tick, too much for byte-wise FNV.
-// Each round is a bijection of its lane, so any single changed word changes the hash.
-uint64_t hash_words(const void* data, size_t bytes, uint64_t seed = 0);
-
 }  // namespace sim
