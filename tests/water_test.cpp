@@ -173,44 +173,58 @@ TEST(SplashSheet, FirstSplashFollowsTheSeedsRing) {
     sim::SplashSheetParams p;
     sim::WaveGrid flat({}, kDt);
     sim::Rng rng(3);
-    for (int rings : {1, 2}) {
+    for (int rim : {1, 2}) {
         sim::SplashSheet s(p);
         s.reset({10.0f, 20.0f}, flat, 0.0f);
-        const float radius = float(rings) * p.spacing_m;  // diameter 2d, then 4d
+        const float radius = float(rim) * p.spacing_m;  // diameter 2d, then 4d
         const float momentum = 1000.0f;
         const float top = s.launch_speed(momentum);
         EXPECT_NEAR(top, momentum * p.speed_per_momentum, 1e-4f);
-        EXPECT_EQ(s.first_splash(radius, momentum, rng, flat, 0.0f), rings == 1 ? 8 : 16);
+        const sim::SplashSheet::Band band = s.ring_band(radius);
+        ASSERT_EQ(band.inner, rim);
+        ASSERT_EQ(band.outer, rim + p.min_skirt_rings);
+        // 8 vertices per ring of Chebyshev radius r: the seed's ring (8 at 2d, 16 at
+        // 4d) and the skirt rings outside it.
+        int expected = 0;
+        for (int r = band.inner; r <= band.outer; ++r) expected += 8 * r;
+        EXPECT_EQ(s.first_splash(radius, momentum, rng, flat, 0.0f), expected);
         EXPECT_TRUE(s.active());
         const int half = s.size() / 2;
         for (int j = 0; j < s.size(); ++j)
             for (int i = 0; i < s.size(); ++i) {
                 size_t idx = size_t(j) * size_t(s.size()) + size_t(i);
                 int di = i - half, dj = j - half;
-                bool on_ring = std::max(std::abs(di), std::abs(dj)) == rings;
-                ASSERT_EQ(s.airborne()[idx], on_ring ? 1 : 0) << di << "," << dj;
-                if (!on_ring) continue;
+                int ring = std::max(std::abs(di), std::abs(dj));
+                bool in_band = ring >= band.inner && ring <= band.outer;
+                ASSERT_EQ(s.airborne()[idx], in_band ? 1 : 0) << di << "," << dj;
+                if (!in_band) continue;
                 glm::vec3 v = s.velocities()[idx];
-                EXPECT_GE(v.y, 0.1f * top - 1e-5f);
-                EXPECT_LE(v.y, top);
-                if (std::abs(di) == std::abs(dj)) {  // diagonal: half on each axis, outward
-                    EXPECT_FLOAT_EQ(v.x, float(di > 0 ? 1 : -1) * 0.5f * v.y);
-                    EXPECT_FLOAT_EQ(v.z, float(dj > 0 ? 1 : -1) * 0.5f * v.y);
-                } else if (std::abs(di) > std::abs(dj)) {
+                if (ring == rim) {  // the seed's speeds on its ring
+                    EXPECT_GE(v.y, 0.1f * top - 1e-5f);
+                    EXPECT_LE(v.y, top);
+                } else {  // the skirt flies slower than the rim
+                    EXPECT_LT(v.y, top * (1.0f - 0.5f / float(p.min_skirt_rings + 1)));
+                }
+                const float l1 = float(std::abs(di) + std::abs(dj));
+                if (dj == 0) {  // along an axis: all of it outward
                     EXPECT_FLOAT_EQ(v.x, float(di > 0 ? 1 : -1) * v.y);
                     EXPECT_EQ(v.z, 0.0f);
-                } else {
-                    EXPECT_EQ(v.x, 0.0f);
-                    EXPECT_FLOAT_EQ(v.z, float(dj > 0 ? 1 : -1) * v.y);
+                } else if (std::abs(di) == std::abs(dj)) {  // diagonal: half on each axis
+                    EXPECT_FLOAT_EQ(v.x, float(di > 0 ? 1 : -1) * 0.5f * v.y);
+                    EXPECT_FLOAT_EQ(v.z, float(dj > 0 ? 1 : -1) * 0.5f * v.y);
+                } else {  // between: the two blended, pointing away from the centre
+                    EXPECT_NEAR(v.x, float(di) / l1 * v.y, 1e-5f);
+                    EXPECT_NEAR(v.z, float(dj) / l1 * v.y, 1e-5f);
                 }
                 EXPECT_NEAR(s.positions()[idx].x, 10.0f + float(di) * p.spacing_m, 1e-4f);
             }
     }
-    // A half-metre stone gets a band two vertices wide: a crown with whole triangles.
+    // A stone of 0.22 m radius: its rim ring and a skirt as wide, within the sheet.
     sim::SplashSheet s(p);
     sim::SplashSheet::Band b = s.ring_band(0.22f);
-    EXPECT_EQ(b.outer, 3);
-    EXPECT_EQ(b.inner, 2);
+    EXPECT_EQ(b.inner, 6);
+    EXPECT_EQ(b.outer, 12);
+    EXPECT_LE(b.outer, (s.size() - 1) / 2);
     EXPECT_LT(s.launch_speed(1e9f), p.max_speed_mps + 1e-4f);
 }
 

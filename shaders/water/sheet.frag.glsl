@@ -17,11 +17,14 @@ layout(location = 1) out vec2 o_kind;  // sheet kind with its thickness, whitene
 void main() {
     vec3 n = normalize(v_normal);
     if (dot(n, u_eye - v_world_pos) < 0.0) n = -n;
+    // Thrown water is never a flat pane: ripple the film's normal (fixed in the film).
+    vec2 wobble = vec2(foam_noise(v_cell * 1.3 + 3.1), foam_noise(v_cell * 1.3 + 7.7)) - 0.5;
+    n = normalize(n + 0.6 * vec3(wobble.x, 0.0, wobble.y));
     float height = v_world_pos.y - u_sea_level;
     float stretch = max(v_stretch, 1.0);
     float patches = foam_noise(v_cell * 0.9) * 0.65 + foam_noise(v_cell * 2.7) * 0.35;
-    float whiteness = u_foam * (0.1 + 0.25 * smoothstep(0.2, 1.0, height) + 0.45 * smoothstep(0.5, 0.8, patches) +
-                                0.35 * smoothstep(3.0, 20.0, stretch));
+    float whiteness = u_foam * (0.3 + 0.25 * smoothstep(0.2, 1.5, height) + 0.45 * smoothstep(0.45, 0.8, patches) +
+                                0.35 * smoothstep(2.0, 10.0, stretch));
     o_normal = vec4(n, 1.0);
     o_kind = vec2(0.76 + 0.24 / stretch, clamp(whiteness, 0.0, 0.9));
 }

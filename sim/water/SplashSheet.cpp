@@ -20,8 +20,6 @@ std::string num(double v) {
 
 bool positive(float v) { return std::isfinite(v) && v > 0.0f; }
 
-float sign_of(int v) { return v > 0 ? 1.0f : (v < 0 ? -1.0f : 0.0f); }
-
 }  // namespace
 
 SplashSheet::SplashSheet(const SplashSheetParams& params) : p_(params), n_(params.size) {
@@ -37,6 +35,8 @@ SplashSheet::SplashSheet(const SplashSheetParams& params) : p_(params), n_(param
     if (!positive(p_.max_speed_mps) || p_.max_speed_mps > 100.0f)
         refuse("max_speed_mps must be in (0, 100], got " + num(p_.max_speed_mps));
     if (!positive(p_.gravity_mps2)) refuse("gravity_mps2 must be positive, got " + num(p_.gravity_mps2));
+    if (p_.min_skirt_rings < 1 || p_.min_skirt_rings > 16)
+        refuse("min_skirt_rings must be 1..16, got " + std::to_string(p_.min_skirt_rings));
     if (!std::isfinite(p_.ripple_depth_m) || p_.ripple_depth_m < 0.0f)
         refuse("ripple_depth_m must be >= 0, got " + num(p_.ripple_depth_m));
     const size_t count = size_t(n_) * size_t(n_);
@@ -53,9 +53,9 @@ glm::vec2 SplashSheet::rest_xz(int i, int j) const {
 SplashSheet::Band SplashSheet::ring_band(float object_radius_m) const {
     const int max_ring = (n_ - 1) / 2;  // the whole band must lie inside the sheet
     float cells = std::isfinite(object_radius_m) ? object_radius_m / p_.spacing_m : 1.0f;
-    int outer = std::clamp(int(std::lround(std::clamp(cells, 0.0f, 1e6f))), 1, max_ring);
-    int width = std::max(1, (outer + 1) / 2);
-    return {std::max(1, outer - width + 1), outer};
+    int rim = std::clamp(int(std::lround(std::clamp(cells, 0.0f, 1e6f))), 1, max_ring);
+    int skirt = std::clamp(rim, p_.min_skirt_rings, 2 * p_.min_skirt_rings);
+    return {rim, std::min(rim + skirt, max_ring)};
 }
 
 float SplashSheet::launch_speed(float momentum_kgmps) const {
@@ -92,10 +92,20 @@ int SplashSheet::first_splash(float object_radius_m, float momentum_kgmps, Rng& 
     const float s = launch_speed(momentum_kgmps);
     const int half = n_ / 2;
     // The seed draws alpha in [0.1, 1] independently per vertex; neighbours then fly
-    // apart into shards. Half of alpha here varies smoothly round the ring (random
-    // phases per splash), half per vertex: still in [0.1, 1], but the crown holds
-    // together as a sheet with a ragged rim.
-    const float phase1 = rng.range(0.0f, 6.2831853f), phase2 = rng.range(0.0f, 6.2831853f);
+    // apart into shards. Here alpha is drawn per direction (kAlphaBins round the ring)
+    // and blended smoothly between them: still in [0.1, 1] at every vertex, but the
+    // crown holds together as one sheet whose height varies round the rim.
+    constexpr int kAlphaBins = 12;
+    float alpha_bin[kAlphaBins];
+    for (float& a : alpha_bin) a = rng.range(0.1f, 1.0f);
+    auto alpha_at = [&](float theta) {
+        float f = (theta + 3.14159265f) / 6.2831853f * float(kAlphaBins);
+        int k0 = int(std::floor(f));
+        float t = f - float(k0);
+        t = t * t * (3.0f - 2.0f * t);
+        k0 = ((k0 % kAlphaBins) + kAlphaBins) % kAlphaBins;
+        return alpha_bin[k0] + (alpha_bin[(k0 + 1) % kAlphaBins] - alpha_bin[k0]) * t;
+    };
     int launched = 0;
     for (int dj = -band.outer; dj <= band.outer; ++dj)
         for (int di = -band.outer; di <= band.outer; ++di) {
@@ -104,18 +114,14 @@ int SplashSheet::first_splash(float object_radius_m, float momentum_kgmps, Rng& 
             if (ahead && float(di) * ahead->x + float(dj) * ahead->y < 0.0f) continue;  // behind: seed 4.2.4
             const size_t idx = size_t(half + dj) * size_t(n_) + size_t(half + di);
             if (airborne_[idx]) continue;
-            const float theta = std::atan2(float(dj), float(di));
-            const float smooth = 0.55f + 0.3f * std::sin(3.0f * theta + phase1) + 0.15f * std::sin(7.0f * theta + phase2);
-            const float a = (0.5f * smooth + 0.5f * rng.range(0.1f, 1.0f)) * s;
-            glm::vec3 v(0.0f, a, 0.0f);
-            if (std::abs(di) == std::abs(dj)) {  // diagonal: half speed on each axis
-                v.x = sign_of(di) * a * 0.5f;
-                v.z = sign_of(dj) * a * 0.5f;
-            } else if (std::abs(di) > std::abs(dj)) {
-                v.x = sign_of(di) * a;
-            } else {
-                v.z = sign_of(dj) * a;
-            }
+            // The rim ring flies at the seed's speed; the skirt outside it slower, so
+            // at any moment it lies below and inside the rim: the crown's wall.
+            const float skirt = float(ring - band.inner) / float(band.outer - band.inner + 1);
+            const float a = alpha_at(std::atan2(float(dj), float(di))) * s * (1.0f - skirt);
+            // Seed: alpha*s along an axis, alpha*s/2 per axis on the diagonals; in
+            // between, the same rule blended (the L1-normalised offset).
+            const float l1 = float(std::abs(di) + std::abs(dj));
+            glm::vec3 v(a * float(di) / l1, a, a * float(dj) / l1);
             v.x += carry_xz.x;
             v.z += carry_xz.y;
             launch(idx, v, grid, sea_level_m);

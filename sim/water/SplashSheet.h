@@ -16,8 +16,11 @@
 namespace sim {
 
 struct SplashSheetParams {
-    int size = 40;                 // vertices per side (3..256)
-    float spacing_m = 0.08f;       // d
+    int size = 64;                 // vertices per side (3..256)
+    float spacing_m = 0.04f;       // d: fine, so the rim of a stone has ~50 vertices
+    // Rings launched outside the seed's ring (the crown's skirt, slower than its rim):
+    // at least this many, up to twice as many for wide objects.
+    int min_skirt_rings = 3;
     float hidden_depth_m = 0.03f;  // how far below the surface a hidden vertex waits
     float velocity_scale = 1.0f;   // artistic multiplier on every launch speed
     // The seed launches vertices at alpha * M * V (kg m/s read as m/s): for a 116 kg
@@ -27,7 +30,7 @@ struct SplashSheetParams {
     float speed_per_momentum = 0.005f;  // (m/s) per (kg m/s)
     float max_speed_mps = 8.0f;    // cap for huge momenta (the boat): about 3 m high
     float gravity_mps2 = 9.81f;
-    float ripple_depth_m = 0.004f; // wave-grid push where a vertex falls back in
+    float ripple_depth_m = 0.0003f; // wave-grid push where a vertex (d x d of film) falls back in
 };
 
 // Something fell back into the water here: the caller pushes the wave grid.
@@ -57,10 +60,10 @@ public:
 
     // Vertex (i, j) rests at centre + (i - size/2, j - size/2) * spacing: the centre is a vertex.
     glm::vec2 rest_xz(int i, int j) const;
-    // Seed 4.2.2: the splash ring is the band of vertices at Chebyshev distance
-    // inner..outer (in cells) from the centre, at the object's rim: outer = its radius
-    // in cells (at least 1), width growing with it. Diameter 2d -> the 8 vertices
-    // around the centre; 4d -> the 16 of the next ring; wider objects a wider band.
+    // Seed 4.2.2: the splash ring is at the object's rim, Chebyshev distance `inner` =
+    // its radius in cells (at least 1): diameter 2d -> the 8 vertices around the
+    // centre; 4d -> the 16 of the next ring. A single ring makes no surface, so the
+    // band goes on outward to `outer` (the skirt, min_skirt_rings or more).
     struct Band {
         int inner, outer;
     };
@@ -74,10 +77,11 @@ public:
     // vertices in the air fly on.
     void move_to(glm::vec2 centre_xz) { centre_ = centre_xz; }
 
-    // First splash (seed eqs. 4.1-4.3): each hidden vertex of the ring band leaves
-    // from the surface with alpha uniform in [0.1, 1] (one per vertex, from rng):
-    // vertical speed alpha*s, horizontal away from the centre, alpha*s along an axis
-    // and alpha*s/2 per axis on the diagonals (s = launch_speed(M V)). With `ahead`
+    // First splash (seed eqs. 4.1-4.3): each hidden vertex of the rim ring leaves from
+    // the surface with alpha in [0.1, 1] (uniform per direction, smooth round the
+    // ring): vertical speed alpha*s, horizontal away from the centre, alpha*s along an
+    // axis and alpha*s/2 per axis on the diagonals (s = launch_speed(M V)); the skirt
+    // rings outside it the same, slowed linearly towards the outermost. With `ahead`
     // (unit xz direction of a moving object) vertices behind the centre are left
     // alone (seed 4.2.4, the bow spray) and `carry_xz` (the object's velocity) is
     // added, so the rule holds in the moving object's frame and the sheet stays

@@ -22,9 +22,9 @@ struct SprayParams {
     float gravity_mps2 = 9.81f;
     float drag_per_s = 0.4f;
     // Launch speed per unit of the seed's |Vx| + |Vy| + |Vz| of the object: a stone
-    // entering at 12 m/s throws droplets at up to ~4 m/s.
-    float speed_fraction = 0.25f;
-    float ripple_depth_m = 0.0015f;  // wave-grid push where a droplet lands
+    // entering at 12 m/s throws droplets at up to ~6 m/s, with the crown.
+    float speed_fraction = 0.4f;
+    float ripple_depth_m = 0.001f;   // wave-grid push where a droplet lands
     float max_age_s = 8.0f;          // droplets that never land (off the grid edge) go
 };
 

@@ -36,8 +36,8 @@ struct WaterParams {
     // minimum delay and the centre back within a quarter of its dip, at most the maximum.
     float second_splash_min_s = 0.25f;
     float second_splash_max_s = 0.4f;
-    float spray_per_momentum = 0.2f;     // droplets per kg m/s of impact momentum
-    int max_spray_per_impact = 400;
+    float spray_per_momentum = 0.35f;    // droplets per kg m/s of impact momentum
+    int max_spray_per_impact = 600;
     float bow_spray_min_speed_mps = 2.0f;  // forward speed from which the bow throws spray
     float bow_spray_mass_kg = 90.0f;     // the M of the seed's rule for the moving bow
     float bow_spray_per_m = 12.0f;       // droplets per metre run at the bow
