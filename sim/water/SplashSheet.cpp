@@ -157,35 +157,50 @@ int SplashSheet::second_splash(float object_radius_m, float momentum_kgmps, Rng&
 void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples) {
     if (flying_ == 0) return;  // nothing to show: hidden vertices need not follow
     const float g = p_.gravity_mps2;
+    for (size_t idx = 0; idx < airborne_.size(); ++idx) {
+        if (!airborne_[idx]) continue;
+        glm::vec3& v = vel_[idx];
+        glm::vec3& p = pos_[idx];
+        v.y -= g * dt;
+        p += v * dt;
+        if (v.y < 0.0f && p.y < sea_level_m + grid.sample({p.x, p.z})) {
+            ripples.push_back({{p.x, p.z}, p_.ripple_depth_m});
+            airborne_[idx] = 0;
+            v = glm::vec3(0.0f);
+            --flying_;
+            const glm::vec2 r = rest_xz(int(idx % size_t(n_)), int(idx / size_t(n_)));
+            p = {r.x, sea_level_m + grid.sample(r) - p_.hidden_depth_m, r.y};
+        }
+    }
+    // Hidden vertices next to airborne ones follow the surface: they shape the normals
+    // at the torn edge of the film. The rest are never drawn.
     for (int j = 0; j < n_; ++j)
         for (int i = 0; i < n_; ++i) {
             const size_t idx = size_t(j) * size_t(n_) + size_t(i);
-            if (airborne_[idx]) {
-                glm::vec3& v = vel_[idx];
-                glm::vec3& p = pos_[idx];
-                v.y -= g * dt;
-                p += v * dt;
-                if (v.y < 0.0f && p.y < sea_level_m + grid.sample({p.x, p.z})) {
-                    ripples.push_back({{p.x, p.z}, p_.ripple_depth_m});
-                    airborne_[idx] = 0;
-                    v = glm::vec3(0.0f);
-                    --flying_;
-                } else {
-                    continue;
-                }
-            }
+            if (airborne_[idx]) continue;
+            const bool edge = (i > 0 && airborne_[idx - 1]) || (i + 1 < n_ && airborne_[idx + 1]) ||
+                              (j > 0 && airborne_[idx - size_t(n_)]) || (j + 1 < n_ && airborne_[idx + size_t(n_)]);
+            if (!edge) continue;
             glm::vec2 r = rest_xz(i, j);
             pos_[idx] = {r.x, sea_level_m + grid.sample(r) - p_.hidden_depth_m, r.y};
         }
 }
 
 uint64_t SplashSheet::hash() const {
+    // Hidden vertices carry no state that matters (a launch starts from the surface),
+    // so only the airborne ones are hashed: the mask, then their positions and speeds.
     Hasher h;
     h.vec(centre_);
     h.i32(flying_);
-    uint64_t v = hash_combine(h.value(), hash_words(pos_.data(), pos_.size() * sizeof(glm::vec3), 11));
-    v = hash_combine(v, hash_words(vel_.data(), vel_.size() * sizeof(glm::vec3), 12));
-    return hash_combine(v, hash_words(airborne_.data(), airborne_.size(), 13));
+    uint64_t v = hash_combine(h.value(), hash_words(airborne_.data(), airborne_.size(), 13));
+    if (flying_ == 0) return v;
+    Hasher f;
+    for (size_t idx = 0; idx < airborne_.size(); ++idx)
+        if (airborne_[idx]) {
+            f.vec(pos_[idx]);
+            f.vec(vel_[idx]);
+        }
+    return hash_combine(v, f.value());
 }
 
 }  // namespace sim
