@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include <glm/common.hpp>
+
 namespace effects {
 
 GpuModel::GpuModel(const Model& model) : name_(model.name) {
@@ -10,7 +12,13 @@ GpuModel::GpuModel(const Model& model) : name_(model.name) {
     std::vector<uint32_t> idx;
     for (const MeshData& m : model.meshes) {
         uint32_t base = uint32_t(verts.size());
-        ranges_.push_back({GLsizei(m.indices.size()), idx.size(), m.roughness, m.metallic});
+        glm::vec3 lo(0.0f), hi(0.0f);
+        if (!m.vertices.empty()) lo = hi = m.vertices.front().position;
+        for (const MeshVertex& v : m.vertices) {
+            lo = glm::min(lo, v.position);
+            hi = glm::max(hi, v.position);
+        }
+        ranges_.push_back({GLsizei(m.indices.size()), idx.size(), m.roughness, m.metallic, m.name, 0.5f * (lo + hi)});
         verts.insert(verts.end(), m.vertices.begin(), m.vertices.end());
         for (uint32_t i : m.indices) idx.push_back(base + i);
     }
@@ -26,14 +34,16 @@ GpuModel::GpuModel(const Model& model) : name_(model.name) {
 
 void GpuModel::draw(const gl::Program& program, bool depth_only) const {
     vao_.bind();
-    for (const Range& r : ranges_) {
-        if (!depth_only) {
-            program.set("u_roughness", r.roughness);
-            program.set("u_metallic", r.metallic);
-        }
-        glDrawElements(GL_TRIANGLES, r.index_count, GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(r.first_index * sizeof(uint32_t)));
+    for (const Range& r : ranges_) draw_range(program, depth_only, r);
+}
+
+void GpuModel::draw_range(const gl::Program& program, bool depth_only, const Range& r) const {
+    if (!depth_only) {
+        program.set("u_roughness", r.roughness);
+        program.set("u_metallic", r.metallic);
     }
+    glDrawElements(GL_TRIANGLES, r.index_count, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(r.first_index * sizeof(uint32_t)));
 }
 
 Model make_sphere_model(int rings, int segments) {

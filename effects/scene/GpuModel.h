@@ -1,6 +1,9 @@
 #pragma once
 // A model uploaded to the GPU: one vertex and one index buffer, a draw range per mesh.
+#include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "effects/gl/Buffer.h"
 #include "effects/gl/Program.h"
@@ -15,6 +18,16 @@ public:
 
     // Draws every mesh, setting the material uniforms unless depth_only.
     void draw(const gl::Program& program, bool depth_only) const;
+    // The same, with each mesh placed by `place(mesh_name, mesh_centre)` first (moving
+    // parts: a car's wheels).
+    template <class Place>
+    void draw_parts(const gl::Program& program, bool depth_only, Place&& place) const {
+        vao_.bind();
+        for (const Range& r : ranges_) {
+            place(r.name, r.centre);
+            draw_range(program, depth_only, r);
+        }
+    }
     const std::string& name() const { return name_; }
 
 private:
@@ -22,7 +35,10 @@ private:
         GLsizei index_count;
         size_t first_index;
         float roughness, metallic;
+        std::string name;
+        glm::vec3 centre;  // of the mesh's bounding box, model space
     };
+    void draw_range(const gl::Program& program, bool depth_only, const Range& r) const;
     std::string name_;
     gl::Buffer vertices_, indices_;
     gl::VertexArray vao_;

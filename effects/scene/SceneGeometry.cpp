@@ -58,8 +58,19 @@ void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool dep
         models_[size_t(inst.model)]->draw(p, depth_only);
     }
     if (desc_.car_model >= 0) {
-        place(world.get<sim::Car>().pose().matrix());
-        models_[size_t(desc_.car_model)]->draw(p, depth_only);
+        // Wheels and hubcaps (meshes "wheel_fl", "hubcap_rr", ...) turn
+        // about their axle (model z) and the front ones steer about their vertical.
+        const sim::Car& car = world.get<sim::Car>();
+        const glm::mat4 body = car.pose().matrix();
+        models_[size_t(desc_.car_model)]->draw_parts(p, depth_only, [&](const std::string& mesh, glm::vec3 centre) {
+            const bool wheel = mesh.starts_with("wheel_") || mesh.starts_with("hubcap_");
+            if (!wheel) return place(body);
+            const bool front = mesh.size() >= 2 && mesh[mesh.size() - 2] == 'f';
+            glm::mat4 m = glm::translate(body, centre);
+            if (front) m = glm::rotate(m, car.steer_rad(), glm::vec3(0.0f, 1.0f, 0.0f));
+            m = glm::rotate(m, -car.wheel_spin_rad(), glm::vec3(0.0f, 0.0f, 1.0f));  // rolling forward
+            place(glm::translate(m, -centre));
+        });
     }
     if (desc_.boat_model >= 0) {
         place(world.get<sim::Boat>().pose().matrix());
