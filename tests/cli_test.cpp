@@ -225,17 +225,20 @@ TEST_F(Cli, ARecordingKilledMidwayReplaysUpToItsLastWholeChunk) {
         _exit(127);
     }
     // Wait until a few chunks are on disk, then kill without warning.
-    for (int i = 0; i < 600 && !(fs::exists(out) && fs::file_size(out) > 8000); ++i)
+    // Until it finishes, the recording is the .partial file beside --out.
+    const fs::path partial = out.string() + ".partial";
+    for (int i = 0; i < 600 && !(fs::exists(partial) && fs::file_size(partial) > 8000); ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     kill(pid, SIGKILL);
     int status = 0;
     waitpid(pid, &status, 0);
     ASSERT_TRUE(WIFSIGNALED(status));
-    ASSERT_TRUE(fs::exists(out));
-    CommandResult r = run("replay " + out.string() + " --headless --check --frames none");
+    EXPECT_FALSE(fs::exists(out));
+    ASSERT_TRUE(fs::exists(partial));
+    CommandResult r = run("replay " + partial.string() + " --headless --check --frames none");
     EXPECT_EQ(r.code, 0) << r.output;
     EXPECT_NE(r.output.find("cut after tick"), std::string::npos) << r.output;
-    EXPECT_EQ(run("replay " + out.string() + " --headless --check --frames none --strict").code, 3);
+    EXPECT_EQ(run("replay " + partial.string() + " --headless --check --frames none --strict").code, 3);
 }
 
 TEST_F(Cli, FrameChecksCatchAWrongGoldenAndNameTheEvidence) {

@@ -218,12 +218,14 @@ TEST_F(ReplayFile, WriterRefusesBadHeadersAndMisuse) {
 
 TEST_F(ReplayFile, UnfinishedWriterKeepsItsTicksAsACutRecording) {
     write_replay(file("u.replay"), 130, /*finish=*/false);
-    const game::Replay r = game::read_replay(file("u.replay"));
+    EXPECT_FALSE(fs::exists(file("u.replay")));  // only a finished recording gets the final name
+    const fs::path partial = game::partial_replay_path(file("u.replay"));
+    const game::Replay r = game::read_replay(partial);
     EXPECT_FALSE(r.complete);
     EXPECT_EQ(r.inputs.size(), 130u);
     EXPECT_NE(r.cut_note.find("cut after tick 130"), std::string::npos) << r.cut_note;
     EXPECT_NE(r.cut_note.find("no end record"), std::string::npos) << r.cut_note;
-    expect_replay_error([&] { game::read_replay(file("u.replay"), {.strict = true}); }, {"--strict", "130"});
+    expect_replay_error([&] { game::read_replay(partial, {.strict = true}); }, {"--strict", "130"});
 }
 
 TEST_F(ReplayFile, CutInsideTheHeaderIsRefusedAtEveryByte) {
@@ -472,7 +474,7 @@ TEST_F(ReplayFile, KilledRecordingLeavesAReplayablePrefix) {
     }();
     for (size_t kill_after_chunks : {1u, 4u, 15u}) {
         SCOPED_TRACE(kill_after_chunks);
-        const fs::path path = file("killed.replay");
+        const fs::path out = file("killed.replay"), path = game::partial_replay_path(out);
         int ready[2];
         ASSERT_EQ(::pipe(ready), 0);
         const pid_t child = ::fork();
@@ -480,7 +482,7 @@ TEST_F(ReplayFile, KilledRecordingLeavesAReplayablePrefix) {
         if (child == 0) {
             int status = 0;
             try {
-                auto writer = game::ReplayWriter::create(path, test_header());
+                auto writer = game::ReplayWriter::create(out, test_header());
                 const char byte = 1;
                 if (::write(ready[1], &byte, 1) != 1) ::_exit(2);
                 for (uint32_t t = 0; t < 100000; ++t) {
@@ -507,6 +509,7 @@ TEST_F(ReplayFile, KilledRecordingLeavesAReplayablePrefix) {
         int status = 0;
         ASSERT_EQ(::waitpid(child, &status, 0), child);
         ASSERT_TRUE(WIFSIGNALED(status)) << "the recorder finished before it was killed";
+        EXPECT_FALSE(fs::exists(out));
 
         const game::Replay r = game::read_replay(path);
         EXPECT_FALSE(r.complete);

@@ -118,13 +118,13 @@ void PassTimer::publish(std::vector<PassTime> passes) {
         else
             it->second += pass.ms;
     }
-    for (const auto& [name, ms] : totals) {
+    for (const auto& total : totals) {  // not a structured binding: clang 14 cannot capture one
         auto it = std::find_if(averages_.begin(), averages_.end(),
-                               [&](const auto& a) { return a.first == name; });
+                               [&](const auto& a) { return a.first == total.first; });
         if (it == averages_.end())
-            averages_.emplace_back(name, ms);
+            averages_.emplace_back(total.first, total.second);
         else
-            it->second += kSmoothing * (ms - it->second);
+            it->second += kSmoothing * (total.second - it->second);
     }
     for (PassTime& pass : passes) pass.average_ms = *average_ms(pass.name);
     results_ = std::move(passes);

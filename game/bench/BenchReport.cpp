@@ -1,11 +1,10 @@
 #include "game/bench/BenchReport.h"
 
 #include <cstdio>
-#include <fstream>
+#include <span>
 
 #include <nlohmann/json.hpp>
 
-#include "game/capture/CaptureError.h"
 #include "game/capture/ImageFiles.h"
 
 namespace game {
@@ -39,17 +38,8 @@ void BenchReport::write_json(const std::filesystem::path& path, const std::strin
         if (!c.note.empty()) e["note"] = c.note;
         j["cases"].push_back(e);
     }
-    std::filesystem::path tmp = temporary_path_beside(path);
-    {
-        std::ofstream out(tmp);
-        out << j.dump(2) << "\n";
-        if (!out) {
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            throw CaptureError("cannot write " + path.string());
-        }
-    }
-    replace_with(tmp, path);
+    const std::string text = j.dump(2) + "\n";
+    write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
 }
 
 }  // namespace game

@@ -1,12 +1,16 @@
 #include "game/capture/ImageFiles.h"
 #include "game/capture/CaptureError.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -52,6 +56,17 @@ std::filesystem::path temporary_path_beside(const std::filesystem::path& path) {
 
 void replace_with(const std::filesystem::path& temporary, const std::filesystem::path& path) {
     std::error_code error;
+    // On disk before the rename: after a power cut `path` holds the old file or the new
+    // one, never a name pointing at blocks that were not written yet.
+    const int fd = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
+    const bool synced = fd >= 0 && ::fsync(fd) == 0;
+    const int sync_errno = errno;
+    if (fd >= 0) ::close(fd);
+    if (!synced) {
+        std::filesystem::remove(temporary, error);
+        throw CaptureError("cannot write " + quoted(path) + ": cannot flush " + quoted(temporary) + ": " +
+                           std::strerror(sync_errno));
+    }
     std::filesystem::rename(temporary, path, error);
     if (error) {
         std::filesystem::remove(temporary, error);
@@ -69,20 +84,19 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
                                      quoted(path.parent_path()) + ": " + error.message());
     }
 
-    const std::filesystem::path temporary = temporary_path_beside(path);
-    auto fail = [&](const std::string& why) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw CaptureError("cannot write " + quoted(path) + ": " + why);
-    };
-
-    // "png" names the format: the temporary's name has no .png extension.
+    // Encoded in memory, then written with every write checked: OpenImageIO's PNG
+    // writer does not report a failed write (a full disk), which would otherwise put a
+    // truncated PNG under `path`.
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    auto fail = [&](const std::string& why) { throw CaptureError("cannot write " + quoted(path) + ": " + why); };
     auto out = OIIO::ImageOutput::create("png");
     if (!out) fail("OpenImageIO has no PNG writer: " + OIIO::geterror());
+    if (!out->supports("ioproxy") || !out->set_ioproxy(&memory)) fail("OpenImageIO cannot encode a PNG in memory");
     OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
     // Our pixels are straight alpha: without this OIIO would un-premultiply them.
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out->open(temporary.string(), spec)) fail(out->geterror());
+    if (!out->open(path.string(), spec)) fail(out->geterror());
     if (!out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) {
         const std::string why = out->geterror();
         out->close();
@@ -90,6 +104,32 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
     }
     if (!out->close()) fail(out->geterror());
     out.reset();
+    write_file_atomically(path, encoded);
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::span<const unsigned char> bytes) {
+    const std::filesystem::path temporary = temporary_path_beside(path);
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0) throw CaptureError("cannot write " + quoted(path) + ": " + std::strerror(errno));
+    size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const std::string why = n < 0 ? std::strerror(errno) : "nothing written";
+            ::close(fd);
+            std::error_code ignored;
+            std::filesystem::remove(temporary, ignored);
+            throw CaptureError("cannot write " + quoted(path) + ": " + why);
+        }
+        done += size_t(n);
+    }
+    if (::close(fd) != 0) {
+        const std::string why = std::strerror(errno);
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw CaptureError("cannot write " + quoted(path) + ": " + why);
+    }
     replace_with(temporary, path);
 }
 

@@ -2,6 +2,7 @@
 #include "game/capture/Image.h"
 
 #include <filesystem>
+#include <span>
 
 namespace game {
 
@@ -21,8 +22,12 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image);
 ImageRGBA8 read_png(const std::filesystem::path& path);
 
 // For file writers: a unique temporary name in the same directory as `path` (so the
-// final rename stays on one file system), and moving it into place.
+// final rename stays on one file system), and moving it into place once it is flushed
+// to disk (throws CaptureError and removes the temporary if either fails).
 std::filesystem::path temporary_path_beside(const std::filesystem::path& path);
 void replace_with(const std::filesystem::path& temporary, const std::filesystem::path& path);
+// Writes `bytes` to a temporary beside `path`, checking every write, and moves it into
+// place; throws CaptureError naming `path` (and leaves no temporary) on failure.
+void write_file_atomically(const std::filesystem::path& path, std::span<const unsigned char> bytes);
 
 }  // namespace game

@@ -96,6 +96,9 @@ int run_cli(int argc, char** argv) {
     } catch (const UsageError& e) {
         std::cerr << "error: " << e.what() << "\n(spindrift --help lists the commands and options)\n";
         return kExitUsage;
+    } catch (const ReplayWriteError& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return kExitIo;
     } catch (const ReplayError& e) {
         std::cerr << "error: " << e.what() << "\n";
         return kExitBadInput;

@@ -49,8 +49,7 @@ int record_command(const std::vector<std::string>& argv) {
         writer.finish();
     } catch (...) {
         // A recording that failed is not left behind to be mistaken for a cut one.
-        std::error_code ec;
-        std::filesystem::remove(*out, ec);
+        writer.discard();
         throw;
     }
     progress.finish();

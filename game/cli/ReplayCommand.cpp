@@ -13,6 +13,7 @@
 #include "game/cli/Commands.h"
 #include "game/cli/ExitCode.h"
 #include "game/cli/Progress.h"
+#include "game/level/LevelMemory.h"
 #include "game/platform/HeadlessContext.h"
 #include "game/play/PlayMode.h"
 #include "game/replay/FrameSelection.h"
@@ -85,6 +86,9 @@ int replay_command(const std::vector<std::string>& argv) {
     std::unique_ptr<effects::Renderer> renderer;
     std::unique_ptr<FrameCapture> capture;
     if (any_frames) {
+        // The replay's frame size against the level's memory budget, before any target exists.
+        MemoryBudget memory = session.level.memory;
+        charge_frame_memory(header.frame_width, header.frame_height, memory);
         context = std::make_unique<HeadlessContext>();
         renderer = std::make_unique<effects::Renderer>(session.level.scene, *session.world);
         capture = std::make_unique<FrameCapture>(int(header.frame_width), int(header.frame_height));

@@ -453,6 +453,13 @@ private:
 effects::Model load_gltf_model(const fs::path& file, sim::Hasher* content) {
     std::string bytes = read_level_file(file, kMaxGltfFileBytes);
     hash_blob(content, bytes.data(), bytes.size());
+    return parse_gltf_model(bytes, file, content);
+}
+
+effects::Model parse_gltf_model(const std::string& bytes, const fs::path& file, sim::Hasher* content) {
+    if (bytes.size() > kMaxGltfFileBytes)
+        throw LevelError(file.string() + ": too large (" + std::to_string(bytes.size()) + " bytes, at most " +
+                         std::to_string(kMaxGltfFileBytes) + ")");
     tinygltf::Model gltf = parse_gltf(bytes, file, content);
     return Flattener(gltf, file).run();
 }

@@ -28,6 +28,10 @@ inline constexpr size_t kMaxGltfVertices = size_t(1) << 22;  // per model, after
 // read (the file, then any external buffers in order) is fed to it, each preceded by
 // its length.
 effects::Model load_gltf_model(const std::filesystem::path& file, sim::Hasher* content = nullptr);
+// The same for a file's bytes already in memory (`content` gets only external buffers);
+// external buffers are still read from beside `file`.
+effects::Model parse_gltf_model(const std::string& bytes, const std::filesystem::path& file,
+                                sim::Hasher* content = nullptr);
 
 // Reads a whole file of at most max_bytes; throws LevelError naming it otherwise.
 std::string read_level_file(const std::filesystem::path& file, uint64_t max_bytes);

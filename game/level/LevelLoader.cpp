@@ -14,6 +14,7 @@
 
 #include "game/DataPaths.h"
 #include "game/level/GltfModel.h"
+#include "game/level/LevelMemory.h"
 #include "sim/core/Hash.h"
 
 namespace game {
@@ -124,8 +125,8 @@ public:
     LevelParser(const fs::path& file, const json& doc) : r_(file), doc_(doc) {}
 
     // Everything in the JSON, checked; assets are only named here, not loaded.
-    void parse(sim::LevelDesc& level, std::vector<Placement>& placements) {
-        r_.object(doc_, "", {"format", "id", "seed", "world", "roads", "sun", "rain", "water", "car", "boat", "tank_spot", "props"});
+    void parse(sim::LevelDesc& level, uint64_t& budget_mib, std::vector<Placement>& placements) {
+        r_.object(doc_, "", {"format", "id", "seed", "budget_mib", "world", "roads", "sun", "rain", "water", "car", "boat", "tank_spot", "props"});
         const json& format = r_.required(doc_, "", "format");
         if (!format.is_number_unsigned() || format.get<uint64_t>() != 1)
             r_.fail("format", "unsupported format " + (format.is_primitive() ? format.dump() : std::string(format.type_name())) +
@@ -135,6 +136,13 @@ public:
         if (const json* seed = LevelReader::optional(doc_, "seed")) {
             if (!seed->is_number_unsigned()) r_.fail("seed", "expected a non-negative integer");
             level.seed = seed->get<uint64_t>();
+        }
+        if (const json* budget = LevelReader::optional(doc_, "budget_mib")) {
+            if (!budget->is_number_unsigned() || budget->get<uint64_t>() < kMinLevelBudgetMib ||
+                budget->get<uint64_t>() > kMaxLevelBudgetMib)
+                r_.fail("budget_mib", "expected a whole number of MiB from " + std::to_string(kMinLevelBudgetMib) +
+                                          " to " + std::to_string(kMaxLevelBudgetMib));
+            budget_mib = budget->get<uint64_t>();
         }
         world(r_.required(doc_, "", "world"), level);
         if (const json* roads = LevelReader::optional(doc_, "roads")) {
@@ -284,14 +292,21 @@ fs::path resolve_level_path(std::string_view name_or_path) {
 }
 
 LoadedLevel load_level(std::string_view name_or_path) {
-    LoadedLevel out;
-    out.path = resolve_level_path(name_or_path);
+    const fs::path path = resolve_level_path(name_or_path);
     std::error_code ec;
-    if (!fs::exists(out.path, ec)) {
-        if (looks_like_path(name_or_path)) throw LevelError(out.path.string() + ": level file not found");
-        throw LevelError("no level named '" + std::string(name_or_path) + "' (looked for " + out.path.string() + ")");
+    if (!fs::exists(path, ec)) {
+        if (looks_like_path(name_or_path)) throw LevelError(path.string() + ": level file not found");
+        throw LevelError("no level named '" + std::string(name_or_path) + "' (looked for " + path.string() + ")");
     }
-    std::string text = read_level_file(out.path, kMaxLevelJsonBytes);
+    return load_level_text(path, read_level_file(path, kMaxLevelJsonBytes));
+}
+
+LoadedLevel load_level_text(const fs::path& path, const std::string& text) {
+    LoadedLevel out;
+    out.path = path;
+    if (text.size() > kMaxLevelJsonBytes)
+        throw LevelError(out.path.string() + ": too large (" + std::to_string(text.size()) + " bytes, at most " +
+                         std::to_string(kMaxLevelJsonBytes) + ")");
     if (json_nesting_depth(text) > kMaxJsonNesting)
         throw LevelError(out.path.string() + ": invalid JSON: nested deeper than " + std::to_string(kMaxJsonNesting) +
                          " levels");
@@ -303,8 +318,12 @@ LoadedLevel load_level(std::string_view name_or_path) {
     }
 
     std::vector<Placement> placements;  // car, boat, then props
-    LevelParser(out.path, doc).parse(out.sim, placements);
+    uint64_t budget_mib = kDefaultLevelBudgetMib;
+    LevelParser(out.path, doc).parse(out.sim, budget_mib, placements);
     LevelReader r(out.path);
+    // Everything the level states is charged before the world or any asset is made.
+    out.memory = MemoryBudget(out.path.string(), budget_mib * kMiB);
+    charge_level_memory(out.sim, out.memory);
 
     sim::Hasher content;
     content.u64(text.size());
@@ -312,6 +331,7 @@ LoadedLevel load_level(std::string_view name_or_path) {
 
     // Each distinct asset once, in first-use order: that order is also the hash order.
     fs::path asset_dir = out.path.parent_path() / out.path.stem();
+    std::error_code ec;
     std::map<std::string, int> model_of_asset;
     for (const Placement& p : placements) {
         std::string key = fs::path(p.asset).lexically_normal().generic_string();
@@ -321,11 +341,16 @@ LoadedLevel load_level(std::string_view name_or_path) {
             r.fail(p.where + ".asset", p.asset + " not found (looked in " + asset_dir.string() + ")");
         content.u64(key.size());
         content.bytes(key.data(), key.size());
+        // Parsing holds the text, its JSON and the decoded buffers at once: about four
+        // times the file (external buffers are bounded by the glTF loader's own limit).
+        const uint64_t file_bytes = fs::file_size(file, ec);
+        out.memory.require("loading " + key, ec ? 0 : 4 * file_bytes);
         try {
             out.scene.models.push_back(load_gltf_model(file, &content));
         } catch (const LevelError& e) {
             r.fail(p.where + ".asset", e.what());
         }
+        out.memory.charge("model " + key, model_memory_bytes(out.scene.models.back()));
         model_of_asset[key] = int(out.scene.models.size()) - 1;
     }
     out.content_hash = content.value();

@@ -7,6 +7,9 @@
 //     "format": 1,                       required, must be 1
 //     "id": "harbour",                   required, 1..64 characters
 //     "seed": 20261122,                  optional unsigned integer (default 1)
+//     "budget_mib": 512,                 optional memory budget in MiB, 64..65536 (default
+//                                          1024): the level's estimated needs (LevelMemory.h)
+//                                          must fit, or it is refused before they are allocated
 //     "world": {                         required
 //       "half_extent_m": 160,            the world is [-h, h] in x and z; (0, 2000]
 //       "land_height_m": 1.2,            land where z < shore_z_m
@@ -49,6 +52,7 @@
 
 #include "effects/scene/SceneDesc.h"
 #include "game/level/LevelError.h"
+#include "game/level/MemoryBudget.h"
 #include "sim/world/LevelDesc.h"
 
 namespace game {
@@ -64,6 +68,9 @@ struct LoadedLevel {
     // boat, props): its name and its file's bytes (and external buffers), each with its
     // length. Identifies the level's content in replays.
     uint64_t content_hash = 0;
+    // The budget and what the level and its assets were charged against it; frames are
+    // charged by whoever renders them (charge_frame_memory).
+    MemoryBudget memory;
 };
 
 // A level name ("harbour" -> <data_dir>/levels/harbour.json) or a path (contains '/'
@@ -72,5 +79,8 @@ std::filesystem::path resolve_level_path(std::string_view name_or_path);
 
 // Throws LevelError with one message naming the file and what is wrong.
 LoadedLevel load_level(std::string_view name_or_path);
+// The same for a level JSON already in memory, as if read from `path` (its assets are
+// read from beside it).
+LoadedLevel load_level_text(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace game

@@ -232,7 +232,8 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
     std::optional<ReplayWriter> writer;
     if (options.record) {
         writer.emplace(ReplayWriter::create(*options.record, replay_header_for(session, 480, 270, {})));
-        std::cout << "recording to " << options.record->string() << std::endl;
+        std::cout << "recording to " << writer->partial_path().string() << " (renamed to "
+                  << options.record->string() << " at the end)" << std::endl;
     }
     bool recording = writer.has_value();
     TickHooks hooks;

@@ -52,19 +52,31 @@ std::vector<uint8_t> encode_header(const ReplayHeader& h) {
 
 }  // namespace
 
+std::filesystem::path partial_replay_path(const std::filesystem::path& path) {
+    std::filesystem::path partial = path;
+    partial += ".partial";
+    return partial;
+}
+
 ReplayWriter ReplayWriter::create(const std::filesystem::path& path, const ReplayHeader& header) {
     if (std::string problem = replay_header_problem(header); !problem.empty())
         throw ReplayError("cannot record replay " + path.string() + ": " + problem);
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    const std::filesystem::path partial = partial_replay_path(path);
+    const int fd = ::open(partial.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0)
-        throw ReplayError("cannot create replay " + path.string() + ": " + std::strerror(errno));
+        throw ReplayWriteError("cannot create replay " + partial.string() + ": " + std::strerror(errno));
     ReplayWriter writer(path, fd, header.subsystem_names.size());
-    writer.write_record(encode_header(header));
+    try {
+        writer.write_record(encode_header(header));
+    } catch (...) {
+        writer.discard();
+        throw;
+    }
     return writer;
 }
 
 ReplayWriter::ReplayWriter(std::filesystem::path path, int fd, size_t part_count)
-    : path_(std::move(path)), fd_(fd), part_count_(part_count) {
+    : path_(std::move(path)), partial_path_(partial_replay_path(path_)), fd_(fd), part_count_(part_count) {
     pending_inputs_.reserve(kChunkTicks);
     pending_world_hashes_.reserve(kChunkTicks);
     pending_fingerprints_.reserve(kChunkTicks * part_count_);
@@ -72,6 +84,7 @@ ReplayWriter::ReplayWriter(std::filesystem::path path, int fd, size_t part_count
 
 ReplayWriter::ReplayWriter(ReplayWriter&& other) noexcept
     : path_(std::move(other.path_)),
+      partial_path_(std::move(other.partial_path_)),
       fd_(std::exchange(other.fd_, -1)),
       part_count_(other.part_count_),
       ticks_(other.ticks_),
@@ -89,6 +102,7 @@ ReplayWriter& ReplayWriter::operator=(ReplayWriter&& other) noexcept {
     if (this != &other) {
         abandon();
         path_ = std::move(other.path_);
+        partial_path_ = std::move(other.partial_path_);
         fd_ = std::exchange(other.fd_, -1);
         part_count_ = other.part_count_;
         ticks_ = other.ticks_;
@@ -119,7 +133,7 @@ void ReplayWriter::abandon() noexcept {
 
 void ReplayWriter::append(sim::TickInput input, const sim::WorldHash& after) {
     if (finished_) throw std::logic_error("replay " + path_.string() + ": append() after finish()");
-    if (failed_) throw ReplayError("replay " + path_.string() + ": an earlier write failed");
+    if (failed_) throw ReplayWriteError("replay " + path_.string() + ": an earlier write failed");
     if (sim::quantise(input) != input)
         throw std::logic_error("replay " + path_.string() + ": input has unknown control bits");
     if (after.parts.size() != part_count_)
@@ -139,17 +153,36 @@ void ReplayWriter::append(sim::TickInput input, const sim::WorldHash& after) {
 
 void ReplayWriter::finish() {
     if (finished_) throw std::logic_error("replay " + path_.string() + ": finish() called twice");
-    if (failed_) throw ReplayError("replay " + path_.string() + ": an earlier write failed");
+    if (failed_) throw ReplayWriteError("replay " + path_.string() + ": an earlier write failed");
     if (!pending_inputs_.empty()) write_pending_chunk();
     std::vector<uint8_t> end(kEndTag.begin(), kEndTag.end());
     put_u32(end, ticks_);
     put_u32(end, chunks_);
     put_crc_since(end, 0);
     write_record(end);
+    // On disk before the rename, so that `path` never names a file the kernel had not written.
+    if (::fsync(fd_) != 0) fail_write("cannot finish replay " + partial_path_.string());
     finished_ = true;
     const int fd = std::exchange(fd_, -1);
-    if (::close(fd) != 0)
-        throw ReplayError("cannot finish replay " + path_.string() + ": " + std::strerror(errno));
+    if (::close(fd) != 0) fail_write("cannot finish replay " + partial_path_.string());
+    std::error_code ec;
+    std::filesystem::rename(partial_path_, path_, ec);
+    if (ec)
+        throw ReplayWriteError("cannot finish replay " + path_.string() + ": renaming " + partial_path_.string() +
+                               " failed: " + ec.message());
+}
+
+void ReplayWriter::discard() noexcept {
+    finished_ = true;
+    clear_pending();
+    if (fd_ >= 0) ::close(std::exchange(fd_, -1));
+    if (!partial_path_.empty()) ::unlink(partial_path_.c_str());
+}
+
+void ReplayWriter::fail_write(const std::string& what) {
+    const int error = errno;
+    failed_ = true;
+    throw ReplayWriteError(what + ": " + std::strerror(error));
 }
 
 void ReplayWriter::write_pending_chunk() {
@@ -185,10 +218,10 @@ void ReplayWriter::write_record(const std::vector<uint8_t>& bytes) {
     while (done < bytes.size()) {
         const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
+        if (n < 0) fail_write("cannot write replay " + partial_path_.string());
+        if (n == 0) {
             failed_ = true;
-            throw ReplayError("cannot write replay " + path_.string() + ": " +
-                              (n < 0 ? std::strerror(errno) : "nothing written"));
+            throw ReplayWriteError("cannot write replay " + partial_path_.string() + ": nothing written");
         }
         done += size_t(n);
     }

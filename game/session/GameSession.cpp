@@ -5,8 +5,12 @@
 namespace game {
 
 GameSession GameSession::open(std::string_view level_name_or_path, int threads, std::optional<uint64_t> seed) {
+    return start(load_level(level_name_or_path), threads, seed);
+}
+
+GameSession GameSession::start(LoadedLevel level, int threads, std::optional<uint64_t> seed) {
     GameSession s;
-    s.level = load_level(level_name_or_path);
+    s.level = std::move(level);
     sim::LevelDesc desc = s.level.sim;
     if (seed) desc.seed = *seed;
     try {

@@ -15,6 +15,8 @@ struct GameSession {
 
     // `seed` overrides the level's (a replay's header carries the seed it was made with).
     static GameSession open(std::string_view level_name_or_path, int threads, std::optional<uint64_t> seed = {});
+    // The world of a level already loaded; a level the sim refuses is a LevelError.
+    static GameSession start(LoadedLevel level, int threads, std::optional<uint64_t> seed = {});
 };
 
 }  // namespace game
