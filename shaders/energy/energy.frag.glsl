@@ -70,6 +70,6 @@ void main() {
     }
     // Smooth saturation instead of the seed's clamp; white where it saturates.
     float glow = 1.0 - exp(-u_saturation * H);
-    vec3 colour = mix(u_glow_colour * glow, vec3(1.0), smoothstep(0.55, 1.0, glow) * glow);
+    vec3 colour = mix(u_glow_colour * glow, vec3(1.0), smoothstep(0.75, 1.0, glow));
     o_colour = vec4(colour * u_intensity * glow, 0.0);
 }

@@ -36,7 +36,7 @@ struct WeaponParams {
     float life_s = 2.5f;
     float fade_s = 0.6f;           // at the end of its life, or after a hit
     float strength = 0.12f;        // a = b of every segment at full brightness
-    float radius_m = 1.6f;         // field cut-off around each segment
+    float radius_m = 1.1f;         // field cut-off around each segment
     float sway_m = 0.35f;
     float dip_rad = 0.05f;         // fired this far below the vehicle's heading (about 3 degrees)
     float muzzle_height_m = 1.4f;  // above the vehicle's origin
