@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
 namespace effects {
@@ -14,15 +15,19 @@ struct TileRect {
     int x0, y0, x1, y1;  // inclusive tile range
 };
 
-// The tiles the segment's bounding sphere can cover; all of them when the sphere
-// reaches the near plane (its projection is unbounded there).
+// The tiles the segment can cover: the projection of the box around its capsule of
+// influence (R around the axis, R beyond each end), all tiles when the box reaches
+// the near plane (its projection is unbounded there).
 TileRect cover(const Camera& cam, const sim::EnergySegment& s, int tiles_x, int tiles_y, int width, int height) {
     const TileRect all{0, 0, tiles_x - 1, tiles_y - 1};
-    const glm::vec3 centre = s.start + s.direction * (0.5f * s.length_m);
-    const float radius = 0.5f * s.length_m + s.radius_m;
+    const glm::vec3 d = s.direction;
+    const glm::vec3 side = glm::normalize(std::fabs(d.y) < 0.9f ? glm::cross(d, glm::vec3(0, 1, 0))
+                                                                 : glm::cross(d, glm::vec3(1, 0, 0)));
+    const glm::vec3 up = glm::cross(side, d);
+    const float r = s.radius_m;
     glm::vec2 lo(1e30f), hi(-1e30f);
     for (int c = 0; c < 8; ++c) {
-        glm::vec3 corner = centre + radius * glm::vec3(c & 1 ? 1.0f : -1.0f, c & 2 ? 1.0f : -1.0f, c & 4 ? 1.0f : -1.0f);
+        glm::vec3 corner = s.start + d * (c & 1 ? s.length_m + r : -r) + side * (c & 2 ? r : -r) + up * (c & 4 ? r : -r);
         glm::vec4 clip = cam.view_proj * glm::vec4(corner, 1.0f);
         if (clip.w <= cam.near_m) return all;
         glm::vec2 ndc = glm::vec2(clip) / clip.w;

@@ -1,9 +1,9 @@
 #pragma once
-// Per-tile culling of energy segments: each segment's bounding sphere (half its length
-// plus its cut-off radius about its middle) is projected to a screen rectangle, and
-// each tile lists the segments whose rectangle covers it. The pass then shades only
-// tiles with segments, each pixel integrating only its tile's segments, so the cost
-// follows the segments a pixel can see rather than all of them.
+// Per-tile culling of energy segments: the box around each segment's capsule of
+// influence (its cut-off radius around the axis and beyond both ends) is projected to
+// a screen rectangle, and each tile lists the segments whose rectangle covers it. The
+// pass then shades only tiles with segments, each pixel integrating only its tile's
+// segments, so the cost follows the segments a pixel can see rather than all of them.
 #include <cstdint>
 #include <span>
 #include <vector>

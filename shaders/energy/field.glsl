@@ -10,46 +10,41 @@ struct EnergySegmentGpu {
 };
 layout(std430, binding = 0) readonly buffer EnergySegments { EnergySegmentGpu u_segments[]; };
 
-// Distance below which the axis and the centres count as singular: the density is
-// clamped there, so rays through M or along the axis stay finite.
+// The density is clamped to its value at this distance from a centre or the axis: rays
+// through M or along the axis stay finite.
 const float kEnergyCore_m = 0.02;
 
-// asinh without the cancellation of log(x + sqrt(x^2 + 1)) near 0.
-float asinh_stable(float x) {
-    float ax = abs(x);
-    float r;
-    if (ax < 0.1) {
-        float x2 = ax * ax;
-        r = ax * (1.0 - x2 * (1.0 / 6.0 - x2 * (3.0 / 40.0)));
-    } else if (ax > 1e4) {
-        r = log(2.0 * ax) + 0.25 / (ax * ax);
-    } else {
-        r = log(ax + sqrt(ax * ax + 1.0));
-    }
-    return x < 0.0 ? -r : r;
+// log(1 + d) for d >= 0, accurate for small d too.
+float log1p_small(float d) {
+    return d < 1e-2 ? d * (1.0 - d * (0.5 - d * (1.0 / 3.0 - d * 0.25))) : log(1.0 + d);
 }
 
-// Integral over [s0, s1] of ds / sqrt(A s^2 + 2 B s + C), where m = sqrt(A C - B^2)
-// (the caller computes it from a cross product, free of cancellation) and the
-// quadratic is the squared distance to a point or an axis. Substituting x = (A s + B)/m
-// gives asinh(x)/sqrt(A); the difference of two asinh of one sign is taken through
-// asinh(x1) - asinh(x0) = asinh((x1 - x0)(x1 + x0) / (x1 sqrt(1 + x0^2) + x0 sqrt(1 + x1^2)))
-// so nothing cancels as the ray turns parallel to the axis (A -> 0).
+// Integral of du / sqrt(u^2 + m^2) over [p0, p0 + dp], p0 >= 0: log((p1 + r1) / (p0 + r0))
+// written as log1p of a ratio, so nothing cancels when the interval is short in u
+// (a ray nearly parallel to the axis) and nothing divides by m (a ray through it).
+float log_ratio(float p0, float dp, float m) {
+    float p1 = p0 + dp;
+    float r0 = sqrt(p0 * p0 + m * m), r1 = sqrt(p1 * p1 + m * m);
+    return log1p_small(dp * (1.0 + (p1 + p0) / (r1 + r0)) / (p0 + r0));
+}
+
+// Integral over [s0, s1] of ds / max(sqrt(A s^2 + 2 B s + C), core), the quadratic being
+// the squared distance to a point (A = 1) or an axis, and m = sqrt(A C - B^2) (the
+// caller gets it from a cross product, free of cancellation). With u = A s + B the
+// distance is sqrt(u^2 + m^2) / sqrt(A), so outside the core the integral is
+// asinh(u / m) / sqrt(A), taken on each side of the closest point as a log ratio;
+// inside the core (|u| < uc) the density is clamped, a constant.
 float line_integral(float A, float B, float C, float m, float s0, float s1) {
     if (!(s1 > s0)) return 0.0;
-    if (A < 1e-8) return (s1 - s0) / sqrt(max(C, kEnergyCore_m * kEnergyCore_m));  // parallel: constant distance
-    float a = sqrt(A);
-    float mm = max(m, a * kEnergyCore_m);  // closest distance m / a clamped to the core
-    float x0 = (A * s0 + B) / mm, x1 = (A * s1 + B) / mm;
-    float diff;
-    if ((x0 > 0.0 && x1 > 0.0) || (x0 < 0.0 && x1 < 0.0)) {
-        float dx = A * (s1 - s0) / mm;
-        float den = x1 * sqrt(1.0 + x0 * x0) + x0 * sqrt(1.0 + x1 * x1);
-        diff = asinh_stable(dx * (x1 + x0) / den);
-    } else {
-        diff = asinh_stable(x1) - asinh_stable(x0);
-    }
-    return diff / a;
+    if (A < 1e-12) return (s1 - s0) / max(sqrt(C), kEnergyCore_m);  // parallel: constant distance
+    float u0 = A * s0 + B, u1 = A * s1 + B;
+    float uc = sqrt(max(A * kEnergyCore_m * kEnergyCore_m - m * m, 0.0));
+    float logs = 0.0;
+    if (u1 > uc) logs += log_ratio(max(u0, uc), u0 >= uc ? A * (s1 - s0) : u1 - uc, m);
+    if (u0 < -uc) logs += log_ratio(max(-u1, uc), u1 <= -uc ? A * (s1 - s0) : -uc - u0, m);
+    float c0 = max(u0, -uc), c1 = min(u1, uc);
+    float core = c1 > c0 ? (c1 - c0) / (A * kEnergyCore_m) : 0.0;
+    return logs / sqrt(A) + core;
 }
 
 vec2 overlap(vec2 r, vec2 o) { return vec2(max(r.x, o.x), min(r.y, o.y)); }
@@ -69,7 +64,7 @@ vec2 ahead_of_plane(float h0, float k, float c, float s_end) {
 
 // Within R of a point (A = 1) or an axis: A s^2 + 2 B s + C < R^2.
 vec2 within_radius(float A, float B, float C, float m, float R) {
-    if (A < 1e-8) return C < R * R ? vec2(-3e38, 3e38) : vec2(0.0);
+    if (A < 1e-12) return C < R * R ? vec2(-3e38, 3e38) : vec2(0.0);
     float h2 = A * R * R - m * m;
     if (h2 <= 0.0) return vec2(0.0);
     float h = sqrt(h2);
