@@ -16,8 +16,15 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "SimTestLevel.h"
+#include "effects/energy/EnergyLightPass.h"
 #include "effects/energy/EnergyPass.h"
 #include "effects/energy/EnergyProbe.h"
+#include "effects/scene/EnvironmentPass.h"
+#include "effects/scene/OpaquePass.h"
+#include "effects/scene/ShadowPass.h"
+#include "game/capture/Readback.h"
+#include "sim/weapon/Weapon.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
 #include "game/platform/HeadlessContext.h"
@@ -277,4 +284,58 @@ TEST_F(EnergyRenderTest, SixOrderingsOfCameraBeamAndGeometry) {
     }
 }
 
+// The beams as line lights: a shot in the world becomes one line light, and the lit
+// opaque scene (the ground under it) brightens near the beam and nowhere far from it.
+TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
+    constexpr int W = 160, H = 100;
+    sim::World world(make_test_level());
+    effects::SceneDesc desc;
+    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
+                                  effects::SceneTargets{}};
+    scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
+    scene.lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    scene.targets.resize(W, H);
+    sim::CameraView view;
+    view.eye = {-20.0f, 14.0f, -30.0f};
+    view.target = {-20.0f, 1.0f, -14.0f};
+    const effects::Camera cam = effects::make_camera(view, float(W) / float(H));
+    effects::EnvironmentPass environment;
+    effects::ShadowPass shadow;
+    effects::OpaquePass opaque;
+    effects::EnergyLightPass lights;
+    auto render = [&]() {
+        effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
+        environment.render(frame);
+        shadow.render(frame);
+        lights.render(frame);
+        opaque.render(frame);
+        return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+    };
+    const game::ImageRGBA32F dark = render();
+    // A grown shot 2 m over the land, across the view.
+    sim::Weapon& weapon = world.get<sim::Weapon>();
+    weapon.fire({-28.0f, 3.0f, -14.0f}, {1.0f, 0.0f, 0.0f});
+    for (int t = 0; t < 12; ++t) world.step({});
+    ASSERT_EQ(weapon.shots().size(), 1u);
+    effects::EnergyView energy;
+    effects::gather_energy_view(world, energy);
+    ASSERT_EQ(lights.lights(energy).size(), 1u);
+    const game::ImageRGBA32F lit = render();
+
+    // Under the beam (the middle of the image) against the corners, far from it.
+    auto luma = [&](const game::ImageRGBA32F& img, int x, int y) {
+        const float* p = &img.pixels[(size_t(y) * W + size_t(x)) * 4];
+        return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+    };
+    float near_gain = 0.0f, far_gain = 0.0f;
+    for (int y = H / 2 - 5; y < H / 2 + 5; ++y)
+        for (int x = W / 2 - 5; x < W / 2 + 5; ++x) near_gain = std::max(near_gain, luma(lit, x, y) / luma(dark, x, y));
+    for (int y : {2, H - 3})
+        for (int x : {2, W - 3}) far_gain = std::max(far_gain, luma(lit, x, y) / luma(dark, x, y));
+    EXPECT_GT(near_gain, 1.5f);
+    EXPECT_LT(far_gain, 1.001f);
+    std::printf("line light: ground under the beam x%.2f, far corners x%.4f\n", near_gain, far_gain);
+}
+
 }  // namespace
+
