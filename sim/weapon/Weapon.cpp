@@ -36,7 +36,7 @@ void Weapon::fire(glm::vec3 origin, glm::vec3 direction) {
     s.origin = origin;
     s.direction = glm::normalize(direction);
     s.phase = rng_.range(0.0f, 6.2831853f);
-    shape(s, 1.0f / 60.0f);
+    shape(s, kTickSeconds);
     shots_.push_back(s);
 }
 
