@@ -2,7 +2,8 @@
 // The energy wave (specs/energy.md, "Rendering"): after the water, each pixel of the
 // tiles some segment covers integrates the field in closed form between the eye and
 // the first opaque surface of the scene depth (which the water pass has written), and
-// adds the glow to the HDR scene colour before tone mapping.
+// adds the glow to the HDR scene colour before tone mapping; then a bloom: the glow at
+// quarter resolution, blurred, added over the same part of the screen.
 #include <span>
 #include <string_view>
 
@@ -20,9 +21,10 @@ namespace effects {
 // The tweakable look, registered with the debug panel under "energy".
 struct EnergyLook {
     float saturation = 3.0f;                   // k of 1 - exp(-k H)
-    float intensity = 5.0f;                    // HDR radiance where the glow saturates
+    float intensity = 3.0f;                    // HDR radiance where the glow saturates
     glm::vec3 glow_colour{0.25f, 0.6f, 1.0f};  // the falloff's colour; the core goes white
     float max_distance_m = 2000.0f;            // how far rays into the sky integrate
+    float bloom = 0.5f;                        // strength of the blurred glow added on top
 };
 
 // How the field is integrated: closed form (march_samples 0) or the ray-marching
@@ -52,10 +54,13 @@ public:
     const EnergyTileGrid& tiles() const { return tiles_; }  // of the last draw
 
 private:
+    void bloom(const FrameContext& frame, std::span<const sim::EnergySegment> segments);
     // Uploads into a buffer that grows as needed.
     static void upload(gl::Buffer& buffer, std::string_view label, std::span<const std::byte> bytes);
 
-    gl::Program program_;
+    gl::Program program_, blur_, add_;
+    gl::Texture bloom_a_, bloom_b_;  // quarter resolution: the glow, and the half-blurred glow
+    gl::Framebuffer bloom_fbo_a_, bloom_fbo_b_;
     gl::Buffer segments_, tile_list_, tile_segments_;
     gl::Framebuffer fbo_;
     GLuint colour_id_ = 0;  // the scene colour fbo_ holds

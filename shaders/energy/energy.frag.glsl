@@ -47,7 +47,8 @@ float march(vec3 S, vec3 q, float s_end) {
 
 void main() {
     vec2 ndc = gl_FragCoord.xy / u_viewport * 2.0 - 1.0;
-    float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
+    // The depth at this pixel (the bloom draws at a lower resolution than the depth).
+    float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy * vec2(textureSize(u_depth, 0)) / u_viewport), 0).r;
     vec3 S = u_eye;
     vec3 far_point = unproject(ndc, 1.0);
     vec3 q = normalize(far_point - S);
