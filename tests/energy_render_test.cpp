@@ -337,5 +337,37 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     std::printf("line light: ground under the beam x%.2f, far corners x%.4f\n", near_gain, far_gain);
 }
 
+// The pass in the frame: the glow lands in the scene colour where the beam is, and the
+// bloom spreads some of it beyond the field's reach, only near the beam.
+TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
+    constexpr int W = 160, H = 96;
+    sim::World world(make_test_level());
+    effects::SceneDesc desc;
+    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
+                                  effects::SceneTargets{}};
+    scene.targets.resize(W, H);
+    const effects::Camera cam = look({0, 20, 0}, {0, 20, -1}, W, H);  // level, at the sky
+    const std::vector<EnergySegment> beam = {segment({-3, 20, -15}, {1, 0, 0}, 6.0f, 0.12f, 1.1f)};
+    auto frame_with = [&](float bloom) {
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(scene.targets.scene().id(), GL_COLOR, 0, zero);
+        const float far = 1.0f;
+        glClearNamedFramebufferfv(scene.targets.scene().id(), GL_DEPTH, 0, &far);
+        pass.look().bloom = bloom;
+        pass.draw({world, cam, scene, {0, W, H}, 0.0}, beam);
+        return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+    };
+    const game::ImageRGBA32F plain = frame_with(0.0f), bloomed = frame_with(0.5f);
+    auto red = [&](const game::ImageRGBA32F& img, int x, int y) { return img.pixels[(size_t(y) * W + size_t(x)) * 4]; };
+    // The beam crosses the middle row; the field reaches 1.1 m (about 6 px) above it.
+    EXPECT_GT(red(plain, W / 2, H / 2), 0.5f);
+    EXPECT_EQ(red(plain, W / 2, H / 2 - 12), 0.0f);
+    EXPECT_GT(red(bloomed, W / 2, H / 2 - 12), 0.0f);             // bled beyond the field
+    EXPECT_GT(red(bloomed, W / 2, H / 2), red(plain, W / 2, H / 2));
+    EXPECT_EQ(red(bloomed, W / 2, 2), 0.0f);                      // and not far away
+    for (float v : bloomed.pixels) ASSERT_TRUE(std::isfinite(v));
+    pass.look().bloom = effects::EnergyLook{}.bloom;
+}
+
 }  // namespace
 
