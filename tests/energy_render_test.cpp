@@ -22,7 +22,9 @@
 #include "effects/energy/EnergyProbe.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/OpaquePass.h"
+#include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
+#include "effects/water/WaterPass.h"
 #include "game/capture/Readback.h"
 #include "sim/weapon/Weapon.h"
 #include "game/capture/FrameCompare.h"
@@ -367,6 +369,75 @@ TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
     EXPECT_EQ(red(bloomed, W / 2, 2), 0.0f);                      // and not far away
     for (float v : bloomed.pixels) ASSERT_TRUE(std::isfinite(v));
     pass.look().bloom = effects::EnergyLook{}.bloom;
+}
+
+// A beam standing half in the harbour: the water pass writes the sea surface into the
+// scene depth, so the part under the water is hidden like the part behind a wall.
+TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
+    constexpr int W = 128, H = 96;
+    sim::World world(make_test_level());  // no wave grid: the water pass draws a flat sea at 0
+    effects::SceneDesc desc;
+    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
+                                  effects::SceneTargets{}};
+    scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
+    scene.targets.resize(W, H);
+    const effects::Camera cam = look({40.0f, 3.0f, 10.0f}, {40.0f, 0.0f, 30.0f}, W, H);
+    effects::EnvironmentPass environment;
+    effects::ShadowPass shadow;
+    effects::OpaquePass opaque;
+    effects::SceneCopyPass copy;  // the depth before the water
+    effects::WaterPass water;
+    effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
+    for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy, &water})
+        p->render(frame);
+    const std::vector<EnergySegment> beam = {segment({40.0f, -3.0f, 30.0f}, {0, 1, 0}, 6.0f, 0.12f, 1.1f)};
+
+    effects::gl::Texture target = effects::gl::Texture::create_2d("test.energy", GL_RGBA32F, W, H);
+    effects::gl::Framebuffer fbo = effects::gl::Framebuffer::create("test.energy");
+    fbo.attach_colour(0, target);
+    fbo.check_complete();
+    auto energy_over = [&](const effects::gl::Texture& depth) {
+        fbo.bind();
+        glViewport(0, 0, W, H);
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
+        pass.draw_field(cam, depth, W, H, beam, true);
+        return game::read_framebuffer_rgba32f(fbo.id(), GL_COLOR_ATTACHMENT0, W, H);
+    };
+    const game::ImageRGBA32F seabed = energy_over(scene.targets.depth_copy());
+    const game::ImageRGBA32F surface = energy_over(scene.targets.depth());
+    // Rows top-down: the head (y = 3) above the horizon of the view, the foot under water.
+    auto column_sum = [&](const game::ImageRGBA32F& img, int y0, int y1) {
+        double sum = 0.0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < W; ++x) sum += img.pixels[(size_t(y) * W + size_t(x)) * 4];
+        return sum;
+    };
+    const double all_seabed = column_sum(seabed, 0, H), all_surface = column_sum(surface, 0, H);
+    EXPECT_GT(all_seabed, 10.0);
+    EXPECT_LT(all_surface, 0.8 * all_seabed);  // the part under the water is gone
+    EXPECT_GT(all_surface, 0.2 * all_seabed);  // the part above it is not
+    // The head, in front of the sky, is the same either way.
+    glm::vec4 head = cam.view_proj * glm::vec4(40.0f, 3.0f, 30.0f, 1.0f);
+    const int hx = int((head.x / head.w * 0.5f + 0.5f) * W), hy = int((0.5f - head.y / head.w * 0.5f) * H);
+    ASSERT_TRUE(hx >= 0 && hx < W && hy >= 0 && hy < H);
+    const float a = seabed.pixels[(size_t(hy) * W + size_t(hx)) * 4], b = surface.pixels[(size_t(hy) * W + size_t(hx)) * 4];
+    EXPECT_GT(a, 0.0f);
+    EXPECT_NEAR(b / a, 1.0f, 1e-4f);
+    std::printf("water occlusion: H summed over the view %.1f over the sea bed, %.1f over the sea surface\n",
+                all_seabed, all_surface);
+    if (const char* png_dir = std::getenv("SPINDRIFT_ENERGY_PNG_DIR")) {
+        pass.draw(frame, beam);
+        const game::ImageRGBA32F hdr =
+            game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+        game::ImageRGBA8 image{W, H, std::vector<uint8_t>(size_t(W) * H * 4, 255)};
+        for (size_t i = 0; i < size_t(W) * H; ++i)
+            for (size_t k = 0; k < 3; ++k) {
+                const double c = hdr.pixels[i * 4 + k];
+                image.pixels[i * 4 + k] = uint8_t(std::lround(255.0 * std::pow(c / (1.0 + c), 1.0 / 2.2)));
+            }
+        game::write_png(std::filesystem::path(png_dir) / "beam_in_water.png", image);
+    }
 }
 
 }  // namespace
