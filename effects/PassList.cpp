@@ -1,5 +1,7 @@
 // The frame, in order. An effect adds its pass here, after what it reads.
 #include "effects/Renderer.h"
+#include "effects/energy/EnergyLightPass.h"
+#include "effects/energy/EnergyPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
@@ -13,9 +15,11 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     std::vector<std::unique_ptr<Pass>> passes;
     passes.push_back(std::make_unique<EnvironmentPass>());
     passes.push_back(std::make_unique<ShadowPass>());
+    passes.push_back(std::make_unique<EnergyLightPass>());  // before anything is lit
     passes.push_back(std::make_unique<OpaquePass>());
     passes.push_back(std::make_unique<SceneCopyPass>());
     passes.push_back(std::make_unique<WaterPass>());
+    passes.push_back(std::make_unique<EnergyPass>());  // additive, stops at the water's depth too
     passes.push_back(std::make_unique<TonemapPass>());
     return passes;
 }

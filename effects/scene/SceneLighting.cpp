@@ -1,5 +1,10 @@
 #include "effects/scene/SceneLighting.h"
 
+#include <algorithm>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
 namespace effects {
 
 SceneLighting::SceneLighting(int env_size, int shadow_size)
@@ -10,6 +15,25 @@ SceneLighting::SceneLighting(int env_size, int shadow_size)
     shadow_map.set_filter(GL_LINEAR, GL_LINEAR);
     shadow_map.set_wrap(GL_CLAMP_TO_EDGE);
     shadow_map.set_depth_compare(true, GL_LEQUAL);
+    set_line_lights({});
+}
+
+void SceneLighting::set_line_lights(std::span<const LineLight> lights) {
+    // std140: the count, then starts, ends and colours of kMaxLineLights lights.
+    std::vector<glm::vec4> block(1 + 3 * kMaxLineLights, glm::vec4(0.0f));
+    const size_t n = std::min(lights.size(), kMaxLineLights);
+    for (size_t i = 0; i < n; ++i) {
+        block[1 + i] = glm::vec4(lights[i].start, lights[i].reach_m);
+        block[1 + kMaxLineLights + i] = glm::vec4(lights[i].end, lights[i].intensity);
+        block[1 + 2 * kMaxLineLights + i] = glm::vec4(lights[i].colour, 0.0f);
+    }
+    const int count = int(n);
+    std::span<const std::byte> bytes = std::as_bytes(std::span(block));
+    if (line_lights_.id() == 0)
+        line_lights_ = gl::Buffer::create("lighting.line_lights", GLsizeiptr(bytes.size()), bytes.data());
+    else
+        line_lights_.update(0, bytes);
+    line_lights_.update(0, std::as_bytes(std::span(&count, 1)));
 }
 
 void SceneLighting::apply_sky(const gl::Program& p) const {
@@ -29,6 +53,7 @@ void SceneLighting::apply(const gl::Program& p) const {
     p.set("u_shadow_map", int(kShadowUnit));
     env_cube.bind(kEnvUnit);
     shadow_map.bind(kShadowUnit);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLineLightBinding, line_lights_.id());
 }
 
 }  // namespace effects

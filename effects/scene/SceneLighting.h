@@ -1,9 +1,12 @@
 #pragma once
 // Sun, sky and their textures: the environment cube the sky fills and the sun's
 // shadow map. Every lit pass binds them with apply().
+#include <span>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "effects/gl/Buffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 
@@ -16,10 +19,20 @@ struct SkyState {
     bool operator==(const SkyState&) const = default;
 };
 
+// A light along a segment (an energy beam): shaders/common/lighting.glsl's LineLights.
+struct LineLight {
+    glm::vec3 start{0.0f}, end{0.0f};
+    float reach_m = 0.0f;
+    float intensity = 0.0f;  // per metre of the segment
+    glm::vec3 colour{1.0f};
+};
+
 class SceneLighting {
 public:
     static constexpr GLuint kEnvUnit = 14;
     static constexpr GLuint kShadowUnit = 15;
+    static constexpr GLuint kLineLightBinding = 3;
+    static constexpr size_t kMaxLineLights = 16;
 
     SceneLighting(int env_size, int shadow_size);
 
@@ -33,9 +46,12 @@ public:
     gl::Texture env_cube;
     gl::Texture shadow_map;
     float env_max_lod() const { return float(env_levels_ - 1); }
+    // The line lights of the frame (none unless set; beyond kMaxLineLights ignored).
+    void set_line_lights(std::span<const LineLight> lights);
 
 private:
     int env_levels_;
+    gl::Buffer line_lights_;
 };
 
 }  // namespace effects

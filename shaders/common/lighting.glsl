@@ -5,6 +5,40 @@ uniform mat4 u_shadow_matrix;  // world -> shadow texture coordinates and depth
 uniform samplerCube u_env;
 uniform float u_env_max_lod;
 
+// Line lights (SceneLighting::set_line_lights): the energy weapon's beams light the
+// surfaces near them. Ends, reach, radiant intensity per metre and colour.
+const int kMaxLineLights = 16;
+layout(std140, binding = 3) uniform LineLights {
+    ivec4 u_line_light_count;                   // x
+    vec4 u_line_light_start[kMaxLineLights];    // xyz, reach_m
+    vec4 u_line_light_end[kMaxLineLights];      // xyz, intensity per metre
+    vec4 u_line_light_colour[kMaxLineLights];   // rgb
+};
+
+// Irradiance at p (normal n) from the line lights: a few samples of each segment's
+// Lambertian emission, fading to zero at its reach.
+vec3 line_light_irradiance(vec3 p, vec3 n) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < min(u_line_light_count.x, kMaxLineLights); ++i) {
+        vec3 a = u_line_light_start[i].xyz, b = u_line_light_end[i].xyz;
+        float reach = u_line_light_start[i].w;
+        vec3 ab = b - a;
+        float len2 = dot(ab, ab);
+        float f = len2 > 1e-8 ? clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+        if (distance(p, a + f * ab) > reach) continue;
+        const int kSamples = 6;
+        float e = 0.0;
+        for (int k = 0; k < kSamples; ++k) {
+            vec3 l = a + ab * ((float(k) + 0.5) / float(kSamples)) - p;
+            float r2 = dot(l, l);
+            float fade = 1.0 - smoothstep(0.5 * reach, reach, sqrt(r2));
+            e += max(dot(n, l), 0.0) * inversesqrt(r2) / (r2 + 0.25) * fade;
+        }
+        sum += u_line_light_colour[i].rgb * (u_line_light_end[i].w * sqrt(len2) / float(kSamples) * e);
+    }
+    return sum;
+}
+
 float sun_visibility(vec3 world_pos, vec3 n) {
     vec4 s = u_shadow_matrix * vec4(world_pos + n * 0.08, 1.0);
     vec3 p = s.xyz / s.w;
@@ -52,6 +86,7 @@ vec3 shade_surface(vec3 base, float roughness, float metallic, vec3 world_pos, v
     vec3 diffuse_colour = base * (1.0 - metallic);
     vec3 f = fresnel_schlick(max(dot(n, v), 0.0), f0);
     vec3 direct = (diffuse_colour / 3.14159265 * (1.0 - f) + f * ggx_specular(n, v, l, roughness)) * u_sun_radiance * nl * shadow;
+    direct += diffuse_colour / 3.14159265 * line_light_irradiance(world_pos, n);
     vec3 ambient = textureLod(u_env, n, u_env_max_lod).rgb * diffuse_colour * (0.6 + 0.4 * n.y);
     vec3 r = reflect(-v, n);
     vec3 spec_env = textureLod(u_env, r, roughness * u_env_max_lod).rgb * env_brdf(f0, roughness, max(dot(n, v), 1e-3));

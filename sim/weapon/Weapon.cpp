@@ -11,6 +11,23 @@
 
 namespace sim {
 
+namespace {
+
+// What the head runs into at xz: the higher of the ground and the sea there.
+struct Surface {
+    float height_m;
+    bool water;
+};
+
+Surface surface_at(const World& world, glm::vec3 p) {
+    const glm::vec2 xz(p.x, p.z);
+    const float ground = world.terrain().ground_height(xz);
+    const float sea = world.sea().height_at(xz);
+    return sea >= ground ? Surface{sea, true} : Surface{ground, false};
+}
+
+}  // namespace
+
 Weapon::Weapon(uint64_t seed, WeaponParams params) : p_(params), rng_(seed, 0x5eed0fu) {}
 
 void Weapon::fire(glm::vec3 origin, glm::vec3 direction) {
@@ -19,24 +36,34 @@ void Weapon::fire(glm::vec3 origin, glm::vec3 direction) {
     s.origin = origin;
     s.direction = glm::normalize(direction);
     s.phase = rng_.range(0.0f, 6.2831853f);
+    shape(s, kTickSeconds);
     shots_.push_back(s);
 }
 
 void Weapon::shape(Shot& s, float dt) const {
-    float t = float(s.age_ticks) * dt;
-    float grown = std::clamp(t / p_.growth_s, 0.0f, 1.0f);
-    float length = p_.max_length_m * grown * grown * (3.0f - 2.0f * grown);  // smoothstep growth
+    const float t = float(s.age_ticks) * dt;
+    const float grown = std::clamp(t / p_.growth_s, 0.0f, 1.0f);
+    const float length = p_.max_length_m * grown * grown * (3.0f - 2.0f * grown);  // smoothstep growth
     float fade = std::clamp((p_.life_s - t) / p_.fade_s, 0.0f, 1.0f);
-    glm::vec3 head = s.origin + s.direction * (p_.speed_mps * t);
-    glm::vec3 tail = head - s.direction * length;
-    // Sway sideways and up, perpendicular to the flight direction.
+    float head_d = p_.speed_mps * t;
+    if (s.hit()) {
+        // Stopped at the impact: the tail catches up and the light dies away.
+        head_d = s.hit_distance_m;
+        fade = std::min(fade, std::clamp(1.0f - float(s.age_ticks - s.hit_age_ticks) * dt / p_.fade_s, 0.0f, 1.0f));
+    }
+    const float tail_d = std::clamp(p_.speed_mps * t - length, 0.0f, head_d);
+    const glm::vec3 head = s.origin + s.direction * head_d;
+    const glm::vec3 tail = s.origin + s.direction * tail_d;
+    // Sway sideways and up, perpendicular to the flight direction, as much as the beam is long.
+    const float reach = std::min(1.0f, (head_d - tail_d) / p_.max_length_m);
     glm::vec3 side = glm::normalize(glm::cross(s.direction, glm::vec3(0, 1, 0)) + glm::vec3(1e-6f, 0, 0));
     glm::vec3 up = glm::cross(side, s.direction);
     glm::vec3 prev = tail;
     for (int i = 0; i < Shot::kSegments; ++i) {
         float f = float(i + 1) / Shot::kSegments;
         glm::vec3 along = tail + (head - tail) * f;
-        float w = p_.sway_m * grown * std::sin(s.phase + 7.0f * t + 2.1f * float(i)) * (i + 1 < Shot::kSegments ? 1.0f : 0.0f);
+        float w = p_.sway_m * reach * std::sin(s.phase + 7.0f * t + 2.1f * float(i)) *
+                  (i + 1 < Shot::kSegments ? 1.0f : 0.0f);
         glm::vec3 end = along + side * w + up * (0.5f * w);
         EnergySegment& seg = s.segments[size_t(i)];
         glm::vec3 d = end - prev;
@@ -46,23 +73,48 @@ void Weapon::shape(Shot& s, float dt) const {
         seg.length_m = len;
         seg.sphere_strength = p_.strength * fade;
         seg.beam_strength = p_.strength * fade;
+        seg.radius_m = p_.radius_m;
         prev = end;
     }
+}
+
+void Weapon::advance(Shot& s, const World& world, float dt, std::vector<WaterEntry>& water_entries) const {
+    const float before_d = p_.speed_mps * float(s.age_ticks) * dt;
+    ++s.age_ticks;
+    if (!s.hit()) {
+        const float after_d = p_.speed_mps * float(s.age_ticks) * dt;
+        const glm::vec3 a = s.origin + s.direction * before_d, b = s.origin + s.direction * after_d;
+        const Surface sa = surface_at(world, a), sb = surface_at(world, b);
+        const float above_a = a.y - sa.height_m, above_b = b.y - sb.height_m;
+        if (above_b < 0.0f) {
+            // Where the head crossed the surface, linearly between the two ticks.
+            const float f = above_a > 0.0f ? std::clamp(above_a / (above_a - above_b), 0.0f, 1.0f) : 0.0f;
+            s.hit_age_ticks = s.age_ticks;
+            s.hit_distance_m = before_d + f * (after_d - before_d);
+            const glm::vec3 at = s.origin + s.direction * s.hit_distance_m;
+            if (surface_at(world, at).water)
+                water_entries.push_back(
+                    WaterEntry{at, s.direction * p_.speed_mps, p_.impact_radius_m, p_.impact_mass_kg, false});
+        }
+    }
+    shape(s, dt);
 }
 
 void Weapon::step(StepContext& ctx) {
     const Player& player = ctx.world.get<Player>();
     if (player.fires()) {
         const Pose& pose = player.vehicle() == Vehicle::Car ? ctx.world.get<Car>().pose() : ctx.world.get<Boat>().pose();
-        glm::vec3 fwd = pose.forward_flat();
-        fire(pose.position + glm::vec3(0.0f, 1.4f, 0.0f) + fwd * 3.0f, fwd);
+        const glm::vec3 fwd = pose.forward_flat();
+        const glm::vec3 aim = fwd * std::cos(p_.dip_rad) - glm::vec3(0.0f, std::sin(p_.dip_rad), 0.0f);
+        fire(pose.position + glm::vec3(0.0f, p_.muzzle_height_m, 0.0f) + fwd * p_.muzzle_ahead_m, aim);
     }
-    for (Shot& s : shots_) {
-        ++s.age_ticks;
-        shape(s, ctx.dt);
-    }
+    // In shot order: the water sees the impacts in the same order every run.
+    for (Shot& s : shots_) advance(s, ctx.world, ctx.dt, ctx.world.events().water_entries);
     const uint32_t life_ticks = uint32_t(p_.life_s / ctx.dt + 0.5f);
-    std::erase_if(shots_, [&](const Shot& s) { return s.age_ticks >= life_ticks; });
+    const uint32_t fade_ticks = uint32_t(p_.fade_s / ctx.dt + 0.5f);
+    std::erase_if(shots_, [&](const Shot& s) {
+        return s.age_ticks >= life_ticks || (s.hit() && s.age_ticks - s.hit_age_ticks >= fade_ticks);
+    });
 }
 
 uint64_t Weapon::hash() const {
@@ -74,12 +126,15 @@ uint64_t Weapon::hash() const {
         h.vec(s.direction);
         h.f32(s.phase);
         h.u32(s.age_ticks);
+        h.u32(s.hit_age_ticks);
+        h.f32(s.hit_distance_m);
         for (const EnergySegment& seg : s.segments) {
             h.vec(seg.start);
             h.vec(seg.direction);
             h.f32(seg.length_m);
             h.f32(seg.sphere_strength);
             h.f32(seg.beam_strength);
+            h.f32(seg.radius_m);
         }
     }
     return h.value();

@@ -1,27 +1,21 @@
 #pragma once
 // The energy weapon as the sim sees it: shots made of segments that grow from a ball
 // into a beam, travel, sway and fade, all from the shot's start, direction and age.
+// A shot whose head reaches the water or the ground stops there and drains into the
+// impact point; a water impact is reported in World::events() for the water to splash.
 #include <array>
 #include <cstdint>
 #include <vector>
 
-#include <glm/vec3.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include "sim/core/Rng.h"
+#include "sim/weapon/EnergySegment.h"
 #include "sim/world/Subsystem.h"
+#include "sim/world/WorldEvents.h"
 
 namespace sim {
-
-// One segment of the field (see specs/energy.md): start M, unit direction D, length L,
-// sphere strength a and beam strength b.
-struct EnergySegment {
-    glm::vec3 start{0.0f};
-    glm::vec3 direction{1.0f, 0.0f, 0.0f};
-    float length_m = 0.0f;
-    float sphere_strength = 0.0f;
-    float beam_strength = 0.0f;
-};
 
 struct Shot {
     static constexpr int kSegments = 4;
@@ -29,7 +23,10 @@ struct Shot {
     glm::vec3 direction{1.0f, 0.0f, 0.0f};
     float phase = 0.0f;  // random per shot: how it sways
     uint32_t age_ticks = 0;
+    uint32_t hit_age_ticks = 0;  // age when the head hit water or ground; 0 while in flight
+    float hit_distance_m = 0.0f;  // from the origin along the direction, once hit
     std::array<EnergySegment, kSegments> segments{};
+    bool hit() const { return hit_age_ticks != 0; }
 };
 
 struct WeaponParams {
@@ -37,9 +34,16 @@ struct WeaponParams {
     float max_length_m = 14.0f;    // beam length once grown
     float growth_s = 0.6f;         // ball to full beam
     float life_s = 2.5f;
-    float fade_s = 0.6f;
-    float strength = 0.12f;
+    float fade_s = 0.6f;           // at the end of its life, or after a hit
+    float strength = 0.12f;        // a = b of every segment at full brightness
+    float radius_m = 1.1f;         // field cut-off around each segment
     float sway_m = 0.35f;
+    float dip_rad = 0.05f;         // fired this far below the vehicle's heading (about 3 degrees)
+    float muzzle_height_m = 1.4f;  // above the vehicle's origin
+    float muzzle_ahead_m = 3.0f;
+    // What the water feels on impact (WaterEntry): a light, fast body that floats.
+    float impact_radius_m = 0.45f;
+    float impact_mass_kg = 40.0f;
 };
 
 class Weapon final : public Subsystem {
@@ -57,6 +61,8 @@ public:
     const WeaponParams& params() const { return p_; }
 
 private:
+    // Ages a shot by one tick, detects its impact and lays out its segments.
+    void advance(Shot& s, const World& world, float dt, std::vector<WaterEntry>& water_entries) const;
     void shape(Shot& s, float dt) const;
 
     WeaponParams p_;

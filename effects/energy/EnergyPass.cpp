@@ -1,0 +1,168 @@
+#include "effects/energy/EnergyPass.h"
+
+#include <algorithm>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "effects/gl/EmptyVertexArray.h"
+
+namespace effects {
+
+namespace {
+
+// std430 layout of shaders/energy/field.glsl's EnergySegmentGpu.
+struct SegmentGpu {
+    glm::vec4 start_sphere, dir_length, beam_radius;
+};
+
+constexpr GLuint kSegmentBinding = 0, kTileBinding = 1, kTileSegmentBinding = 2;
+constexpr GLuint kDepthUnit = 0;
+
+}  // namespace
+
+EnergyPass::EnergyPass()
+    : program_(gl::Program::from_files("energy", {"energy/tiles.vert.glsl", "energy/energy.frag.glsl"})),
+      blur_(gl::Program::from_files("energy.bloom_blur", {"common/fullscreen.vert.glsl", "energy/bloom_blur.frag.glsl"})),
+      add_(gl::Program::from_files("energy.bloom_add", {"common/fullscreen.vert.glsl", "energy/bloom_add.frag.glsl"})) {}
+
+void EnergyPass::register_params(ParamRegistry& params) {
+    params.add("energy", "saturation", &look_.saturation, 0.1f, 20.0f);
+    params.add("energy", "intensity", &look_.intensity, 0.0f, 40.0f);
+    params.add("energy", "bloom", &look_.bloom, 0.0f, 4.0f);
+}
+
+void EnergyPass::upload(gl::Buffer& buffer, std::string_view label, std::span<const std::byte> bytes) {
+    const GLsizeiptr size = std::max<GLsizeiptr>(GLsizeiptr(bytes.size()), 16);
+    if (buffer.id() == 0 || buffer.size() < size) buffer = gl::Buffer::create(label, std::max(size, 2 * buffer.size()));
+    if (!bytes.empty()) buffer.update(0, bytes);
+}
+
+void EnergyPass::render(const FrameContext& frame) {
+    gather_energy_view(frame.world, view_);
+    draw(frame, view_.segments);
+}
+
+void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {
+    if (segments.empty()) return;
+    const SceneTargets& t = frame.scene.targets;
+    if (t.colour().id() != colour_id_) {
+        // Colour only: the pass samples the scene depth, so it is not attached.
+        fbo_ = gl::Framebuffer::create("energy");
+        fbo_.attach_colour(0, t.colour());
+        fbo_.check_complete();
+        colour_id_ = t.colour().id();
+    }
+    fbo_.bind();
+    glViewport(0, 0, t.width(), t.height());
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    draw_field(frame.camera, t.depth(), t.width(), t.height(), segments, false);
+    glDisable(GL_BLEND);
+    if (look_.bloom > 0.0f) bloom(frame, segments);
+}
+
+void EnergyPass::bloom(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {
+    const SceneTargets& t = frame.scene.targets;
+    const int w = std::max(1, t.width() / 4), h = std::max(1, t.height() / 4);
+    if (bloom_a_.width() != w || bloom_a_.height() != h) {
+        bloom_a_ = gl::Texture::create_2d("energy.bloom_a", GL_RGBA16F, w, h);
+        bloom_b_ = gl::Texture::create_2d("energy.bloom_b", GL_RGBA16F, w, h);
+        for (gl::Texture* tex : {&bloom_a_, &bloom_b_}) {
+            tex->set_filter(GL_LINEAR, GL_LINEAR);
+            tex->set_wrap(GL_CLAMP_TO_EDGE);
+        }
+        bloom_fbo_a_ = gl::Framebuffer::create("energy.bloom_a");
+        bloom_fbo_a_.attach_colour(0, bloom_a_);
+        bloom_fbo_a_.check_complete();
+        bloom_fbo_b_ = gl::Framebuffer::create("energy.bloom_b");
+        bloom_fbo_b_.attach_colour(0, bloom_b_);
+        bloom_fbo_b_.check_complete();
+    }
+    // The glow at quarter resolution, over the same depth.
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(bloom_fbo_a_.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(bloom_fbo_b_.id(), GL_COLOR, 0, zero);
+    bloom_fbo_a_.bind();
+    glViewport(0, 0, w, h);
+    draw_field(frame.camera, t.depth(), w, h, segments, false);
+    if (tiles_.tiles.empty()) return;
+    // Blur and add only around the tiles with segments (plus the blur's reach).
+    glm::ivec2 lo(w, h), hi(0, 0);
+    for (const glm::uvec4& tile : tiles_.tiles) {
+        lo = glm::min(lo, glm::ivec2(tile.x, tile.y) * EnergyTileGrid::kTilePx);
+        hi = glm::max(hi, glm::ivec2(tile.x + 1, tile.y + 1) * EnergyTileGrid::kTilePx);
+    }
+    constexpr int kReach = 8;  // two 4-texel blurs
+    lo = glm::max(lo - kReach, glm::ivec2(0));
+    hi = glm::min(hi + kReach, glm::ivec2(w, h));
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(lo.x, lo.y, hi.x - lo.x, hi.y - lo.y);
+    gl::bind_empty_vertex_array();
+    blur_.use();
+    blur_.set("u_source", 0);
+    bloom_fbo_b_.bind();
+    bloom_a_.bind(0);
+    blur_.set("u_step", glm::vec2(1.0f / float(w), 0.0f));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    bloom_fbo_a_.bind();
+    bloom_b_.bind(0);
+    blur_.set("u_step", glm::vec2(0.0f, 1.0f / float(h)));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    fbo_.bind();
+    glViewport(0, 0, t.width(), t.height());
+    const int sx = t.width() / w, sy = t.height() / h;  // rounded down: the scissor gets a texel of slack
+    glScissor(lo.x * sx, lo.y * sy, (hi.x - lo.x) * sx + sx, (hi.y - lo.y) * sy + sy);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    add_.use();
+    add_.set("u_bloom", 0);
+    add_.set("u_strength", look_.bloom);
+    bloom_a_.bind(0);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int width, int height,
+                            std::span<const sim::EnergySegment> segments, bool raw) {
+    bin_energy_segments(camera, width, height, segments, method_.tile_culling, tiles_);
+    if (tiles_.tiles.empty()) return;
+    std::vector<SegmentGpu> gpu(segments.size());
+    for (size_t i = 0; i < segments.size(); ++i) {
+        const sim::EnergySegment& s = segments[i];
+        gpu[i] = {glm::vec4(s.start, s.sphere_strength), glm::vec4(s.direction, s.length_m),
+                  glm::vec4(s.beam_strength, s.radius_m, 0.0f, 0.0f)};
+    }
+    upload(segments_, "energy.segments", std::as_bytes(std::span(gpu)));
+    upload(tile_list_, "energy.tiles", std::as_bytes(std::span(tiles_.tiles)));
+    upload(tile_segments_, "energy.tile_segments", std::as_bytes(std::span(tiles_.indices)));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSegmentBinding, segments_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tile_list_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileSegmentBinding, tile_segments_.id());
+
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    program_.use();
+    program_.set("u_viewport", glm::vec2(float(width), float(height)));
+    program_.set("u_tile_px", float(EnergyTileGrid::kTilePx));
+    program_.set("u_depth", int(kDepthUnit));
+    program_.set("u_inv_view_proj", camera.inv_view_proj);
+    program_.set("u_eye", camera.eye);
+    program_.set("u_max_distance_m", look_.max_distance_m);
+    program_.set("u_march_samples", method_.march_samples);
+    program_.set("u_raw", int(raw));
+    program_.set("u_saturation", look_.saturation);
+    program_.set("u_intensity", look_.intensity);
+    program_.set("u_glow_colour", look_.glow_colour);
+    depth.bind(kDepthUnit);
+    gl::bind_empty_vertex_array();
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(tiles_.tiles.size()));
+    glDepthMask(GL_TRUE);
+}
+
+}  // namespace effects

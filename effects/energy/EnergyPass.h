@@ -1,0 +1,73 @@
+#pragma once
+// The energy wave (specs/energy.md, "Rendering"): after the water, each pixel of the
+// tiles some segment covers integrates the field in closed form between the eye and
+// the first opaque surface of the scene depth (which the water pass has written), and
+// adds the glow to the HDR scene colour before tone mapping; then a bloom: the glow at
+// quarter resolution, blurred, added over the same part of the screen.
+#include <span>
+#include <string_view>
+
+#include <glm/vec3.hpp>
+
+#include "effects/energy/EnergyTiles.h"
+#include "effects/energy/EnergyView.h"
+#include "effects/gl/Buffer.h"
+#include "effects/gl/Framebuffer.h"
+#include "effects/gl/Program.h"
+#include "effects/scene/Pass.h"
+
+namespace effects {
+
+// The tweakable look, registered with the debug panel under "energy".
+struct EnergyLook {
+    float saturation = 3.0f;                   // k of 1 - exp(-k H)
+    float intensity = 3.0f;                    // HDR radiance where the glow saturates
+    glm::vec3 glow_colour{0.25f, 0.6f, 1.0f};  // the falloff's colour; the core goes white
+    float max_distance_m = 2000.0f;            // how far rays into the sky integrate
+    float bloom = 0.5f;                        // strength of the blurred glow added on top
+};
+
+// How the field is integrated: closed form (march_samples 0) or the ray-marching
+// baseline; with or without per-tile culling.
+struct EnergyMethod {
+    int march_samples = 0;
+    bool tile_culling = true;
+};
+
+class EnergyPass final : public Pass {
+public:
+    EnergyPass();
+    std::string_view name() const override { return "energy"; }
+    void render(const FrameContext& frame) override;
+    void register_params(ParamRegistry& params) override;
+
+    // Adds the glow of these segments to the scene colour, occluded by the scene depth.
+    void draw(const FrameContext& frame, std::span<const sim::EnergySegment> segments);
+    // Draws into the bound framebuffer (viewport 0,0,width,height, blending as the
+    // caller set it): the glow, or with `raw` H in red and the ray's end distance in
+    // green, for float targets. `depth` is the scene depth the rays stop at.
+    void draw_field(const Camera& camera, const gl::Texture& depth, int width, int height,
+                    std::span<const sim::EnergySegment> segments, bool raw);
+
+    EnergyLook& look() { return look_; }
+    EnergyMethod& method() { return method_; }
+    const EnergyTileGrid& tiles() const { return tiles_; }  // of the last draw
+
+private:
+    void bloom(const FrameContext& frame, std::span<const sim::EnergySegment> segments);
+    // Uploads into a buffer that grows as needed.
+    static void upload(gl::Buffer& buffer, std::string_view label, std::span<const std::byte> bytes);
+
+    gl::Program program_, blur_, add_;
+    gl::Texture bloom_a_, bloom_b_;  // quarter resolution: the glow, and the half-blurred glow
+    gl::Framebuffer bloom_fbo_a_, bloom_fbo_b_;
+    gl::Buffer segments_, tile_list_, tile_segments_;
+    gl::Framebuffer fbo_;
+    GLuint colour_id_ = 0;  // the scene colour fbo_ holds
+    EnergyTileGrid tiles_;
+    EnergyView view_;  // reused each frame
+    EnergyLook look_;
+    EnergyMethod method_;
+};
+
+}  // namespace effects

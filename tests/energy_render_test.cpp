@@ -1,0 +1,444 @@
+// The energy pass on a real headless context: the shader's H against an independent
+// quadrature of the same field, no NaN or Inf for any ray (through a segment's start,
+// along its axis, parallel to it, from inside it), and the seed's six orderings of
+// camera, beam and geometry as frame checks against goldens in tests/data/energy.
+// SPINDRIFT_UPDATE_GOLDENS=1 rewrites the goldens; SPINDRIFT_ENERGY_PNG_DIR=dir writes
+// the frames there too.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "SimTestLevel.h"
+#include "effects/energy/EnergyLightPass.h"
+#include "effects/energy/EnergyPass.h"
+#include "effects/energy/EnergyProbe.h"
+#include "effects/scene/EnvironmentPass.h"
+#include "effects/scene/OpaquePass.h"
+#include "effects/scene/SceneCopyPass.h"
+#include "effects/scene/ShadowPass.h"
+#include "effects/water/WaterPass.h"
+#include "game/capture/Readback.h"
+#include "sim/weapon/Weapon.h"
+#include "game/capture/FrameCompare.h"
+#include "game/capture/ImageFiles.h"
+#include "game/platform/HeadlessContext.h"
+#include "sim/core/Rng.h"
+#include "sim/weapon/EnergyField.h"
+
+namespace {
+
+using sim::EnergySegment;
+
+EnergySegment segment(glm::vec3 start, glm::vec3 dir, float length, float strength, float radius) {
+    return {start, glm::normalize(dir), length, strength, strength, radius};
+}
+
+effects::Camera look(glm::vec3 eye, glm::vec3 target, int width, int height) {
+    sim::CameraView v;
+    v.eye = eye;
+    v.target = target;
+    v.fov_y_deg = 60.0f;
+    return effects::make_camera(v, float(width) / float(height));
+}
+
+// The view ray of pixel (x, y) (GL rows), in double, as the shader makes it.
+glm::dvec3 ray_direction(const effects::Camera& cam, int x, int y, int width, int height) {
+    glm::dvec4 ndc((x + 0.5) / width * 2.0 - 1.0, (y + 0.5) / height * 2.0 - 1.0, 1.0, 1.0);
+    glm::dvec4 p = glm::dmat4(cam.inv_view_proj) * ndc;
+    return glm::normalize(glm::dvec3(p) / p.w - glm::dvec3(cam.eye));
+}
+
+// Window depth of a world point.
+float window_depth(const effects::Camera& cam, glm::vec3 p) {
+    glm::vec4 clip = cam.view_proj * glm::vec4(p, 1.0f);
+    return clip.z / clip.w * 0.5f + 0.5f;
+}
+
+class EnergyRenderTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
+    static void TearDownTestSuite() { context_.reset(); }
+    static std::unique_ptr<game::HeadlessContext> context_;
+    effects::EnergyPass pass;
+};
+std::unique_ptr<game::HeadlessContext> EnergyRenderTest::context_;
+
+TEST_F(EnergyRenderTest, ClosedFormMatchesQuadratureAwayFromTheSingularPoints) {
+    constexpr int W = 64, H = 48;
+    effects::EnergyProbe probe(W, H);
+    const effects::Camera cam = look({0.5f, 1.5f, 8.0f}, {0.0f, 0.5f, 0.0f}, W, H);
+    const std::vector<EnergySegment> segs = {
+        segment({-4.0f, 0.5f, 0.0f}, {1.0f, 0.0f, 0.0f}, 5.0f, 0.12f, 1.6f),
+        segment({1.0f, 0.5f, 0.0f}, {1.0f, 0.3f, -0.5f}, 4.0f, 0.10f, 1.2f),
+        segment({-1.0f, 2.2f, -2.0f}, {0.0f, 1.0f, 0.0f}, 0.0f, 0.2f, 1.0f),  // a ball
+        segment({-2.0f, -0.5f, 3.0f}, {0.2f, 0.1f, -1.0f}, 3.0f, 0.08f, 1.4f),  // towards the camera's view
+    };
+    // A wall at z = -1 over the right third of the image: rays there stop inside fields.
+    std::vector<float> depth(size_t(W) * H, 1.0f);
+    for (int y = 0; y < H; ++y)
+        for (int x = 2 * W / 3; x < W; ++x) {
+            glm::dvec3 q = ray_direction(cam, x, y, W, H);
+            double s = (-1.0 - cam.eye.z) / q.z;
+            depth[size_t(y) * W + x] = window_depth(cam, glm::vec3(glm::dvec3(cam.eye) + s * q));
+        }
+    probe.set_depth(depth);
+    probe.draw_energy(pass, cam, segs);
+    const std::vector<glm::vec4> out = probe.read();
+
+    double peak = 0.0;
+    for (const glm::vec4& p : out) peak = std::max(peak, double(p.x));
+    ASSERT_GT(peak, 0.1);
+    int compared = 0, covered = 0, stopped_by_wall = 0;
+    double worst = 0.0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const glm::vec4 p = out[size_t(y) * W + x];
+            ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y)) << x << "," << y;
+            const glm::dvec3 q = ray_direction(cam, x, y, W, H);
+            const double s_end = p.y;
+            const double ref = sim::energy_along_ray(segs, glm::dvec3(cam.eye), q, s_end);
+            if (ref > 0.0) ++covered;
+            if (ref < 1e-3 * peak || sim::energy_singular_distance(segs, glm::dvec3(cam.eye), q, s_end) < 0.1) continue;
+            ++compared;
+            if (x >= 2 * W / 3 && s_end < 20.0) ++stopped_by_wall;
+            const double rel = std::fabs(double(p.x) - ref) / ref;
+            worst = std::max(worst, rel);
+            EXPECT_LT(rel, 1e-3) << "pixel " << x << "," << y << ": shader " << p.x << ", quadrature " << ref;
+        }
+    EXPECT_GT(compared, covered / 2);  // most of the field's pixels are away from the singular points
+    EXPECT_GT(stopped_by_wall, 50);
+    // Per-tile culling gives pixels fewer segments to integrate and changes none.
+    const size_t culled_pairs = pass.tiles().pairs();
+    pass.method().tile_culling = false;
+    probe.draw_energy(pass, cam, segs);
+    EXPECT_LT(culled_pairs, pass.tiles().pairs());
+    const std::vector<glm::vec4> unculled = probe.read();
+    for (size_t i = 0; i < out.size(); ++i)
+        ASSERT_EQ(unculled[i].x, out[i].x) << "pixel " << i % W << "," << i / W;
+    pass.method().tile_culling = true;
+    std::printf("energy exactness: %d rays compared of %d covered, worst relative error %.3g\n", compared, covered,
+                worst);
+}
+
+TEST_F(EnergyRenderTest, NoNanOrInfForAnyRay) {
+    constexpr int N = 33;  // odd: the centre pixel's ray is the view direction
+    effects::EnergyProbe probe(N, N);
+    struct Case {
+        const char* name;
+        glm::vec3 eye, target;
+        std::vector<EnergySegment> segs;
+    };
+    const glm::vec3 z(0.0f, 0.0f, -1.0f);
+    std::vector<Case> cases = {
+        {"along the axis, through M", {0, 0, 0}, {0, 0, -10}, {segment({0, 0, -5}, z, 6.0f, 0.12f, 1.6f)}},
+        {"eye at M", {0, 0, -5}, {0, 0, -10}, {segment({0, 0, -5}, z, 6.0f, 0.12f, 1.6f)}},
+        {"eye at the head", {0, 0, -11}, {0, 0, -20}, {segment({0, 0, -5}, z, 6.0f, 0.12f, 1.6f)}},
+        {"eye in plane I", {0, 0, 0}, {0, 0, -10}, {segment({0, 0, -5}, {1, 0, 0}, 6.0f, 0.12f, 1.6f)}},
+        {"eye on the axis inside the beam", {0, 0, -7}, {3, 1, -9}, {segment({0, 0, -5}, z, 6.0f, 0.12f, 1.6f)}},
+        {"parallel to the axis", {0, 0, 0}, {0, 0, -10}, {segment({0.5f, 0, -2}, z, 20.0f, 0.12f, 1.6f)}},
+        {"perpendicular through M", {0, 0, 0}, {0, 0, -10}, {segment({0, 0, -5}, {0, 1, 0}, 3.0f, 0.12f, 1.6f)}},
+        {"zero length and zero strength", {0, 0, 0}, {0, 0, -10},
+         {segment({0, 0, -5}, z, 0.0f, 0.12f, 1.6f), segment({0, 0, -3}, z, 4.0f, 0.0f, 1.6f)}},
+    };
+    // And random eyes around a chain, looking at random points near it.
+    sim::Rng rng(2009);
+    const std::vector<EnergySegment> chain = {segment({-3, 0, -6}, {1, 0.2f, 0}, 2.0f, 0.12f, 1.6f),
+                                              segment({-1, 0.4f, -6}, {1, -0.1f, 0.3f}, 2.0f, 0.12f, 1.6f),
+                                              segment({1, 0.2f, -5.4f}, {1, 0, 0}, 2.0f, 0.12f, 1.6f)};
+    for (int i = 0; i < 12; ++i) {
+        glm::vec3 eye(rng.range(-4.0f, 4.0f), rng.range(-1.5f, 1.5f), rng.range(-8.0f, -2.0f));
+        glm::vec3 target(rng.range(-3.0f, 3.0f), rng.range(-0.5f, 0.5f), -6.0f);
+        cases.push_back({"random eye near a chain", eye, target + glm::vec3(0.0f, 0.0f, 0.01f), chain});
+    }
+    for (const Case& c : cases) {
+        effects::Camera cam = look(c.eye, c.target, N, N);
+        probe.draw_energy(pass, cam, c.segs);
+        const std::vector<glm::vec4> out = probe.read();
+        int lit = 0;
+        for (const glm::vec4& p : out) {
+            ASSERT_TRUE(std::isfinite(p.x)) << c.name;
+            ASSERT_GE(p.x, 0.0f) << c.name;
+            lit += p.x > 0.0f;
+        }
+        EXPECT_GT(lit, 0) << c.name;
+    }
+    // The nearly parallel rays are not singular (0.5 m from the axis): they must be exact too.
+    effects::Camera cam = look({0, 0, 0}, {0, 0, -10}, N, N);
+    probe.draw_energy(pass, cam, cases[5].segs);
+    const glm::vec4 centre = probe.read()[size_t(N / 2) * N + N / 2];
+    const double ref = sim::energy_along_ray(cases[5].segs, glm::dvec3(0.0), ray_direction(cam, N / 2, N / 2, N, N),
+                                             centre.y);
+    EXPECT_NEAR(centre.x / ref, 1.0, 1e-3);
+}
+
+// The seed's figures 4.8-4.13: one camera, a wall over the right half of the view
+// (z = -20 where x > 0), and the beam moved through every ordering.
+struct Ordering {
+    const char* name;
+    std::vector<EnergySegment> segs;
+};
+
+std::vector<EnergySegment> beam_across(float z) {
+    return {segment({-6, 0, z}, {1, 0.1f, 0}, 4.0f, 0.12f, 1.6f), segment({-2, 0.4f, z}, {1, -0.1f, 0}, 4.0f, 0.12f, 1.6f),
+            segment({2, 0, z}, {1, 0, 0}, 4.0f, 0.12f, 1.6f)};
+}
+
+std::vector<Ordering> orderings() {
+    return {
+        {"1_camera_beam_wall", beam_across(-10.0f)},
+        {"2_beam_through_wall", beam_across(-20.0f)},
+        {"3_camera_wall_beam", beam_across(-30.0f)},
+        {"4_camera_inside_beam", {segment({0.3f, -0.2f, 4}, {0, 0, -1}, 12.0f, 0.12f, 1.6f)}},
+        {"5_beam_behind_camera", beam_across(10.0f)},
+        {"6_beam_through_camera_plane", {segment({-2, -0.5f, 6}, {0, 0, -1}, 12.0f, 0.12f, 1.6f)}},
+    };
+}
+
+TEST_F(EnergyRenderTest, SixOrderingsOfCameraBeamAndGeometry) {
+    constexpr int W = 192, H = 112;
+    effects::EnergyProbe probe(W, H);
+    const effects::Camera cam = look({0, 0, 0}, {0, 0, -1}, W, H);
+    std::vector<float> depth(size_t(W) * H, 1.0f);
+    std::vector<glm::vec4> background(size_t(W) * H);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            glm::dvec3 q = ray_direction(cam, x, y, W, H);
+            glm::dvec3 hit = glm::dvec3(cam.eye) + (-20.0 / q.z) * q;
+            bool wall = hit.x > 0.0;
+            if (wall) depth[size_t(y) * W + x] = window_depth(cam, glm::vec3(hit));
+            // Wall: grey with a brick-ish stripe so the cut reads; sky: dark blue.
+            float stripe = std::fmod(float(hit.y) + 100.0f, 1.0f) < 0.08f ? 0.6f : 1.0f;
+            background[size_t(y) * W + x] = wall ? glm::vec4(0.16f * stripe, 0.15f * stripe, 0.14f * stripe, 1.0f)
+                                                 : glm::vec4(0.02f, 0.03f, 0.06f, 1.0f);
+        }
+    const char* update = std::getenv("SPINDRIFT_UPDATE_GOLDENS");
+    const char* png_dir = std::getenv("SPINDRIFT_ENERGY_PNG_DIR");
+    const std::filesystem::path golden_dir = std::filesystem::path(SPINDRIFT_TEST_DATA) / "energy";
+
+    const std::vector<float> open_sky(size_t(W) * H, 1.0f);
+    for (const Ordering& o : orderings()) {
+        SCOPED_TRACE(o.name);
+        // H with and without the wall, summed over each half of the view.
+        probe.set_depth(open_sky);
+        probe.draw_energy(pass, cam, o.segs);
+        const std::vector<glm::vec4> free = probe.read();
+        probe.set_depth(depth);
+        probe.draw_energy(pass, cam, o.segs);
+        const std::vector<glm::vec4> energy = probe.read();
+        double left = 0.0, right = 0.0, right_free = 0.0, least = 1e30, worst_unhidden = 0.0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const float e = energy[size_t(y) * W + x].x, f = free[size_t(y) * W + x].x;
+                ASSERT_TRUE(std::isfinite(e));
+                (x < W / 2 ? left : right) += e;
+                if (x >= W / 2) right_free += f;
+                least = std::min(least, double(e));
+                worst_unhidden = std::max(worst_unhidden, double(std::fabs(e - f)) / std::max(double(f), 1e-3));
+            }
+        const std::string name = o.name;
+        if (name == "1_camera_beam_wall") {
+            EXPECT_GT(right, 1.0);
+            EXPECT_LT(worst_unhidden, 1e-5);  // nothing hidden: the wall is behind the whole field
+        } else if (name == "2_beam_through_wall") {
+            EXPECT_GT(right, 0.05 * right_free);  // the part in front of the wall shows
+            EXPECT_LT(right, 0.8 * right_free);   // the part behind it does not
+        } else if (name == "3_camera_wall_beam") {
+            EXPECT_GT(left, 1.0);
+            EXPECT_GT(right_free, 1.0);
+            EXPECT_EQ(right, 0.0);  // wholly behind the wall
+        } else if (name == "4_camera_inside_beam") {
+            EXPECT_GT(least, 0.0);  // every ray starts inside the field
+        } else if (name == "5_beam_behind_camera") {
+            EXPECT_EQ(left + right, 0.0);
+        } else if (name == "6_beam_through_camera_plane") {
+            EXPECT_GT(left, 1.0);
+            EXPECT_EQ(right, 0.0);
+        }
+
+        // The frame: the glow over the background, tone mapped as x / (1 + x) in sRGB-ish gamma.
+        probe.draw_glow(pass, cam, o.segs, background);
+        const std::vector<glm::vec4> hdr = probe.read();
+        game::ImageRGBA8 frame{W, H, std::vector<uint8_t>(size_t(W) * H * 4)};
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const glm::vec4 c = hdr[size_t(H - 1 - y) * W + x];  // top-down
+                for (int k = 0; k < 3; ++k)
+                    frame.pixels[(size_t(y) * W + x) * 4 + k] =
+                        uint8_t(std::lround(255.0 * std::pow(c[k] / (1.0 + c[k]), 1.0 / 2.2)));
+                frame.pixels[(size_t(y) * W + x) * 4 + 3] = 255;
+            }
+        if (name != "5_beam_behind_camera") {
+            EXPECT_GT(game::image_stats(frame).luma_stddev, 0.05);
+        }
+        if (png_dir) game::write_png(std::filesystem::path(png_dir) / (name + ".png"), frame);
+        const std::filesystem::path golden = golden_dir / ("ordering_" + name + ".png");
+        if (update && std::string(update) == "1") game::write_png(golden, frame);
+        const game::CompareResult r = game::compare_frames(frame, game::read_png(golden));
+        EXPECT_TRUE(r.passed) << golden << ": " << r.summary;
+    }
+}
+
+// The beams as line lights: a shot in the world becomes one line light, and the lit
+// opaque scene (the ground under it) brightens near the beam and nowhere far from it.
+TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
+    constexpr int W = 160, H = 100;
+    sim::World world(make_test_level());
+    effects::SceneDesc desc;
+    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
+                                  effects::SceneTargets{}};
+    scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
+    scene.lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    scene.targets.resize(W, H);
+    sim::CameraView view;
+    view.eye = {-20.0f, 14.0f, -30.0f};
+    view.target = {-20.0f, 1.0f, -14.0f};
+    const effects::Camera cam = effects::make_camera(view, float(W) / float(H));
+    effects::EnvironmentPass environment;
+    effects::ShadowPass shadow;
+    effects::OpaquePass opaque;
+    effects::EnergyLightPass lights;
+    auto render = [&]() {
+        effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
+        environment.render(frame);
+        shadow.render(frame);
+        lights.render(frame);
+        opaque.render(frame);
+        return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+    };
+    const game::ImageRGBA32F dark = render();
+    // A grown shot 2 m over the land, across the view.
+    sim::Weapon& weapon = world.get<sim::Weapon>();
+    weapon.fire({-28.0f, 3.0f, -14.0f}, {1.0f, 0.0f, 0.0f});
+    for (int t = 0; t < 12; ++t) world.step({});
+    ASSERT_EQ(weapon.shots().size(), 1u);
+    effects::EnergyView energy;
+    effects::gather_energy_view(world, energy);
+    ASSERT_EQ(lights.lights(energy).size(), 1u);
+    const game::ImageRGBA32F lit = render();
+
+    // Under the beam (the middle of the image) against the corners, far from it.
+    auto luma = [&](const game::ImageRGBA32F& img, int x, int y) {
+        const float* p = &img.pixels[(size_t(y) * W + size_t(x)) * 4];
+        return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+    };
+    float near_gain = 0.0f, far_gain = 0.0f;
+    for (int y = H / 2 - 5; y < H / 2 + 5; ++y)
+        for (int x = W / 2 - 5; x < W / 2 + 5; ++x) near_gain = std::max(near_gain, luma(lit, x, y) / luma(dark, x, y));
+    for (int y : {2, H - 3})
+        for (int x : {2, W - 3}) far_gain = std::max(far_gain, luma(lit, x, y) / luma(dark, x, y));
+    EXPECT_GT(near_gain, 1.5f);
+    EXPECT_LT(far_gain, 1.001f);
+    std::printf("line light: ground under the beam x%.2f, far corners x%.4f\n", near_gain, far_gain);
+}
+
+// The pass in the frame: the glow lands in the scene colour where the beam is, and the
+// bloom spreads some of it beyond the field's reach, only near the beam.
+TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
+    constexpr int W = 160, H = 96;
+    sim::World world(make_test_level());
+    effects::SceneDesc desc;
+    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
+                                  effects::SceneTargets{}};
+    scene.targets.resize(W, H);
+    const effects::Camera cam = look({0, 20, 0}, {0, 20, -1}, W, H);  // level, at the sky
+    const std::vector<EnergySegment> beam = {segment({-3, 20, -15}, {1, 0, 0}, 6.0f, 0.12f, 1.1f)};
+    auto frame_with = [&](float bloom) {
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(scene.targets.scene().id(), GL_COLOR, 0, zero);
+        const float far = 1.0f;
+        glClearNamedFramebufferfv(scene.targets.scene().id(), GL_DEPTH, 0, &far);
+        pass.look().bloom = bloom;
+        pass.draw({world, cam, scene, {0, W, H}, 0.0}, beam);
+        return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+    };
+    const game::ImageRGBA32F plain = frame_with(0.0f), bloomed = frame_with(0.5f);
+    auto red = [&](const game::ImageRGBA32F& img, int x, int y) { return img.pixels[(size_t(y) * W + size_t(x)) * 4]; };
+    // The beam crosses the middle row; the field reaches 1.1 m (about 6 px) above it.
+    EXPECT_GT(red(plain, W / 2, H / 2), 0.5f);
+    EXPECT_EQ(red(plain, W / 2, H / 2 - 12), 0.0f);
+    EXPECT_GT(red(bloomed, W / 2, H / 2 - 12), 0.0f);             // bled beyond the field
+    EXPECT_GT(red(bloomed, W / 2, H / 2), red(plain, W / 2, H / 2));
+    EXPECT_EQ(red(bloomed, W / 2, 2), 0.0f);                      // and not far away
+    for (float v : bloomed.pixels) ASSERT_TRUE(std::isfinite(v));
+    pass.look().bloom = effects::EnergyLook{}.bloom;
+}
+
+// A beam standing half in the harbour: the water pass writes the sea surface into the
+// scene depth, so the part under the water is hidden like the part behind a wall.
+TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
+    constexpr int W = 128, H = 96;
+    sim::World world(make_test_level());  // no wave grid: the water pass draws a flat sea at 0
+    effects::SceneDesc desc;
+    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
+                                  effects::SceneTargets{}};
+    scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
+    scene.targets.resize(W, H);
+    const effects::Camera cam = look({40.0f, 3.0f, 10.0f}, {40.0f, 0.0f, 30.0f}, W, H);
+    effects::EnvironmentPass environment;
+    effects::ShadowPass shadow;
+    effects::OpaquePass opaque;
+    effects::SceneCopyPass copy;  // the depth before the water
+    effects::WaterPass water;
+    effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
+    for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy, &water})
+        p->render(frame);
+    const std::vector<EnergySegment> beam = {segment({40.0f, -3.0f, 30.0f}, {0, 1, 0}, 6.0f, 0.12f, 1.1f)};
+
+    effects::gl::Texture target = effects::gl::Texture::create_2d("test.energy", GL_RGBA32F, W, H);
+    effects::gl::Framebuffer fbo = effects::gl::Framebuffer::create("test.energy");
+    fbo.attach_colour(0, target);
+    fbo.check_complete();
+    auto energy_over = [&](const effects::gl::Texture& depth) {
+        fbo.bind();
+        glViewport(0, 0, W, H);
+        const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
+        pass.draw_field(cam, depth, W, H, beam, true);
+        return game::read_framebuffer_rgba32f(fbo.id(), GL_COLOR_ATTACHMENT0, W, H);
+    };
+    const game::ImageRGBA32F seabed = energy_over(scene.targets.depth_copy());
+    const game::ImageRGBA32F surface = energy_over(scene.targets.depth());
+    // Rows top-down: the head (y = 3) above the horizon of the view, the foot under water.
+    auto column_sum = [&](const game::ImageRGBA32F& img, int y0, int y1) {
+        double sum = 0.0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < W; ++x) sum += img.pixels[(size_t(y) * W + size_t(x)) * 4];
+        return sum;
+    };
+    const double all_seabed = column_sum(seabed, 0, H), all_surface = column_sum(surface, 0, H);
+    EXPECT_GT(all_seabed, 10.0);
+    EXPECT_LT(all_surface, 0.8 * all_seabed);  // the part under the water is gone
+    EXPECT_GT(all_surface, 0.2 * all_seabed);  // the part above it is not
+    // The head, in front of the sky, is the same either way.
+    glm::vec4 head = cam.view_proj * glm::vec4(40.0f, 3.0f, 30.0f, 1.0f);
+    const int hx = int((head.x / head.w * 0.5f + 0.5f) * W), hy = int((0.5f - head.y / head.w * 0.5f) * H);
+    ASSERT_TRUE(hx >= 0 && hx < W && hy >= 0 && hy < H);
+    const float a = seabed.pixels[(size_t(hy) * W + size_t(hx)) * 4], b = surface.pixels[(size_t(hy) * W + size_t(hx)) * 4];
+    EXPECT_GT(a, 0.0f);
+    EXPECT_NEAR(b / a, 1.0f, 1e-4f);
+    std::printf("water occlusion: H summed over the view %.1f over the sea bed, %.1f over the sea surface\n",
+                all_seabed, all_surface);
+    if (const char* png_dir = std::getenv("SPINDRIFT_ENERGY_PNG_DIR")) {
+        pass.draw(frame, beam);
+        const game::ImageRGBA32F hdr =
+            game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+        game::ImageRGBA8 image{W, H, std::vector<uint8_t>(size_t(W) * H * 4, 255)};
+        for (size_t i = 0; i < size_t(W) * H; ++i)
+            for (size_t k = 0; k < 3; ++k) {
+                const double c = hdr.pixels[i * 4 + k];
+                image.pixels[i * 4 + k] = uint8_t(std::lround(255.0 * std::pow(c / (1.0 + c), 1.0 / 2.2)));
+            }
+        game::write_png(std::filesystem::path(png_dir) / "beam_in_water.png", image);
+    }
+}
+
+}  // namespace
+
