@@ -1,0 +1,133 @@
+#include "game/bench/RainBench.h"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "effects/gl/Gl.h"
+#include "effects/rain/DropHeightMap.h"
+#include "effects/rain/MetaballReference.h"
+#include "game/level/LevelLoader.h"
+#include "sim/rain/RainSim.h"
+
+namespace game {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string fmt(const char* format, double v) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+// The harbour car's glass with `count` drops on it.
+sim::RainSim busy_glass(int count) {
+    LoadedLevel level = load_level("harbour");
+    sim::RainSim rain({}, level.sim.rain.glass_lower, level.sim.rain.glass_upper, 4242);
+    sim::Rng rng(77, 1);
+    const sim::GlassSurface& g = rain.glass();
+    while (int(rain.drops().size()) < count)
+        rain.add_drop({rng.unit() * float(g.cols()) * g.cell_m(), rng.unit() * float(g.rows()) * g.cell_m()},
+                      rng.range(1.0f, 40.0f));
+    return rain;
+}
+
+void top_up(sim::RainSim& rain, sim::Rng& rng, int count) {
+    const sim::GlassSurface& g = rain.glass();
+    while (int(rain.drops().size()) < count)
+        rain.add_drop({rng.unit() * float(g.cols()) * g.cell_m(), rng.unit() * float(g.rows()) * g.cell_m()},
+                      rng.range(1.0f, 20.0f));
+}
+
+void bench_sim(BenchReport& report, int ticks) {
+    sim::RainSim rain = busy_glass(5000);
+    sim::Rng rng(78, 1);
+    const sim::RainForces forces = rain.forces_for(8.0f, {0.0f, 0.0f}, {0.0f, -9.81f, 0.0f});
+    double secs = 0.0, particles = 0.0;
+    for (int t = 0; t < ticks; ++t) {
+        top_up(rain, rng, 5000);  // the wipers clear drops: keep 5,000 on the glass
+        auto start = Clock::now();
+        rain.advance(1.0f, sim::WiperMode::High, 8.0f, forces, 1.0f / 60.0f);
+        secs += seconds_since(start);
+        particles += double(rain.particles().size());
+    }
+    report.add({"rain", "rain sim per tick, 5000 drops, two wipers on high", secs * 1e3 / ticks, "ms", 1.0, false,
+                "1 core; mean " + fmt("%.0f", particles / ticks) + " wiper particles"});
+}
+
+std::vector<effects::RainMetaball> metaballs_of(const sim::RainSim& rain) {
+    std::vector<effects::RainMetaball> out;
+    for (const sim::RainDrop& d : rain.drops()) out.push_back({d.pos_m, sim::RainSim::radius_m(d.mass_mg), 0.0f});
+    for (const sim::WaterParticle& q : rain.particles()) out.push_back({q.pos_m, sim::RainSim::radius_m(q.mass_mg), 0.0f});
+    return out;
+}
+
+void bench_height_map(BenchReport& report, int frames) {
+    sim::RainSim rain = busy_glass(5000);
+    const sim::RainForces forces = rain.forces_for(0.0f, {0.0f, 0.0f}, {0.0f, -9.81f, 0.0f});
+    for (int t = 0; t < 60; ++t) rain.advance(1.0f, sim::WiperMode::High, 0.0f, forces, 1.0f / 60.0f);
+    const std::vector<effects::RainMetaball> balls = metaballs_of(rain);
+    const glm::vec2 size(rain.glass().width_m(), rain.glass().height_m());
+    effects::DropHeightMap map(1024, 512);
+    map.update(balls, size, 1.8f);
+    glFinish();
+    auto start = Clock::now();
+    for (int f = 0; f < frames; ++f) map.update(balls, size, 1.8f);
+    glFinish();
+    report.add({"rain", "height map: splat, compress, normals @1024x512", seconds_since(start) * 1e3 / frames, "ms",
+                std::nullopt, false, std::to_string(balls.size()) + " metaballs; glFinish around the frames"});
+}
+
+std::vector<effects::SurfaceSample> read_back(const effects::DropHeightMap& map) {
+    std::vector<float> rgba(size_t(map.width()) * size_t(map.height()) * 4);
+    glGetTextureImage(map.surface().id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+    std::vector<effects::SurfaceSample> out(size_t(map.width()) * size_t(map.height()));
+    for (size_t k = 0; k < out.size(); ++k) {
+        const float x = rgba[4 * k], y = rgba[4 * k + 1];
+        out[k] = {{x, y, std::sqrt(std::max(1.0f - x * x - y * y, 0.0f))}, rgba[4 * k + 3] > 0.5f ? rgba[4 * k + 2] : 0.0f};
+    }
+    return out;
+}
+
+void bench_reference(BenchReport& report, int frames) {
+    glm::vec2 size;
+    const std::vector<effects::RainMetaball> scene = effects::merged_drop_scene(size);
+    const int w = 512, h = 256;
+    effects::DropHeightMap map(w, h);
+    map.update(scene, size, 1.0f);
+    glFinish();
+    auto start = Clock::now();
+    for (int f = 0; f < frames; ++f) map.update(scene, size, 1.0f);
+    glFinish();
+    const double fast_s = seconds_since(start) / frames;
+    const std::vector<effects::SurfaceSample> fast = read_back(map);
+
+    start = Clock::now();
+    const std::vector<effects::SurfaceSample> slow = effects::reference_surface(scene, size, w, h);
+    const double slow_s = seconds_since(start);
+    size_t wet = 0;
+    const double angle = effects::mean_normal_angle_deg(fast, slow, wet);
+    const std::string res = std::to_string(w) + "x" + std::to_string(h);
+    report.add({"rain", "2D metaball path @" + res + " (GPU)", fast_s * 1e3, "ms", std::nullopt, false,
+                std::to_string(scene.size()) + " merged drops"});
+    report.add({"rain", "3D metaball reference @" + res + " (CPU)", slow_s * 1e3, "ms", std::nullopt, false,
+                "iso-surface by bisection, 1 thread"});
+    report.add({"rain", "3D reference / 2D path time", slow_s / fast_s, "x", 20.0, true});
+    report.add({"rain", "mean normal angle error, 2D vs 3D", angle, "deg", 5.0, false,
+                std::to_string(wet) + " texels wet in both"});
+}
+
+}  // namespace
+
+void bench_rain(BenchReport& report, bool quick) {
+    bench_sim(report, quick ? 120 : 600);
+    bench_height_map(report, quick ? 3 : 10);
+    bench_reference(report, quick ? 3 : 10);
+}
+
+}  // namespace game
