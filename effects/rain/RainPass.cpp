@@ -77,12 +77,14 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     shade_.set("u_behind", 1);
     const int blades = int(std::min<size_t>(view.blades.size(), 2));
     shade_.set("u_blade_count", blades);
+    static constexpr const char* kPivot[2] = {"u_blade_pivot[0]", "u_blade_pivot[1]"};
+    static constexpr const char* kDir[2] = {"u_blade_dir[0]", "u_blade_dir[1]"};
+    static constexpr const char* kSpan[2] = {"u_blade_span[0]", "u_blade_span[1]"};
     for (int b = 0; b < blades; ++b) {
         const WiperBladeView& w = view.blades[size_t(b)];
-        const std::string i = "[" + std::to_string(b) + "]";
-        shade_.set("u_blade_pivot" + i, w.pivot_m);
-        shade_.set("u_blade_dir" + i, w.direction);
-        shade_.set("u_blade_span" + i, glm::vec2(w.inner_m, w.outer_m));
+        shade_.set(kPivot[b], w.pivot_m);
+        shade_.set(kDir[b], w.direction);
+        shade_.set(kSpan[b], glm::vec2(w.inner_m, w.outer_m));
     }
     height_map_.surface().bind(0);
     behind_.bind(1);

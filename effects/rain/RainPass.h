@@ -18,10 +18,10 @@ namespace effects {
 
 // The tweakable look, registered with the debug panel under "rain".
 struct RainLook {
-    float radius_scale = 1.8f;  // drops drawn this much wider than their contact radius, to read on screen
-    float refraction = 0.05f;   // screen offset (of its height) per unit of normal tilt
+    float radius_scale = 3.5f;  // drops drawn this much wider than their contact radius, to read on screen
+    float refraction = 0.08f;   // screen offset (of its height) per unit of normal tilt
     float blur_lod = 2.5f;      // mip of the scene behind a drop at 360 lines: it is out of focus
-    float rim = 0.7f;           // darkening at a drop's steep edge (light bent away)
+    float rim = 0.4f;           // darkening at a drop's steep edge (light bent away)
 };
 
 class RainPass final : public Pass {

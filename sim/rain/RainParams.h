@@ -1,6 +1,8 @@
 #pragma once
 // The tunables of the windshield rain (specs/rain.md). Masses in milligrams (a
-// milligram of water is a cubic millimetre), lengths in metres.
+// milligram of water is a cubic millimetre), lengths in metres. Drops are a little
+// heavier than most real ones (a few mm across) so that they read from the driver's
+// seat at game resolutions.
 #include <array>
 
 #include <glm/vec2.hpp>
@@ -18,35 +20,35 @@ struct WiperLayout {
 };
 
 struct RainParams {
-    float cell_size_m = 0.005f;
+    float cell_size_m = 0.008f;
 
     // Rain: new drops per square metre of glass per second at intensity 1, more with
     // forward speed; their masses are uniform in [min, max].
-    float drops_per_m2_s = 400.0f;
+    float drops_per_m2_s = 250.0f;
     float speed_gain_per_mps = 0.05f;
-    float new_drop_min_mg = 1.0f, new_drop_max_mg = 10.0f;
+    float new_drop_min_mg = 4.0f, new_drop_max_mg = 40.0f;
 
     // Grid model. A drop of slide_mass_mg just slides on glass raked at 45 degrees;
     // what holds a drop scales with its contact line, so per unit mass as 1 / r^2.
-    float slide_mass_mg = 45.0f;
+    float slide_mass_mg = 180.0f;
     float drag_per_s = 18.0f;             // speed relaxes to (driving - holding) / drag
     float air_start_mps = 6.0f;           // car speed from which air pushes drops
     float air_accel = 0.05f;              // m/s^2 per (m/s)^2 above the start, on a slide-mass drop
     float straight_weight = 1.0f, side_weight = 0.55f;  // ahead vs ahead-left/right, times affinity
     float trail_chance = 0.35f;           // per cell stepped
     float trail_fraction = 0.04f;         // of the mover's mass
-    float trail_min_mg = 0.15f;           // no trailing drop lighter than this
-    float trail_shrink_mg_per_s = 0.25f;  // trailing drops evaporate...
-    float trail_vanish_mg = 0.06f;        // ...and vanish below this
+    float trail_min_mg = 0.6f;            // no trailing drop lighter than this
+    float trail_shrink_mg_per_s = 1.0f;   // trailing drops evaporate...
+    float trail_vanish_mg = 0.25f;        // ...and vanish below this
     float wet_affinity = 0.6f;            // extra affinity of a cell a drop just ran through
     float wet_memory_s = 6.0f;            // fading to none over this
 
     // Particle model around the blades.
-    float particle_mass_mg = 5.0f;
+    float particle_mass_mg = 20.0f;
     float band_m = 0.03f;                 // particles within this of a blade stay particles
     float restitution = 0.2f;
     int collision_iterations = 2;
-    float defer_mass_mg = 70.0f;          // conversion back waits while a drop this heavy...
+    float defer_mass_mg = 280.0f;         // conversion back waits while a drop this heavy...
     int defer_search_cells = 2;           // ...is within this many cells of the target
     float film_fraction = 0.04f;          // of a swept drop left behind as a trailing film drop
 

@@ -50,7 +50,7 @@ struct WaterGridDesc {
 // in car model space, its lower and upper edge from the car's left to its right, the
 // glass ruled between them; and the size of the drop grid's square cells.
 struct RainDesc {
-    float cell_size_m = 0.005f;
+    float cell_size_m = 0.008f;
     std::vector<glm::vec3> glass_lower, glass_upper;  // empty: the car has no windshield
 };
 
