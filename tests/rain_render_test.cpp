@@ -46,9 +46,9 @@ void maybe_write(const game::ImageRGBA8& img, const char* name) {
     }
 }
 
-const effects::RainPass* rain_pass(const effects::Renderer& r) {
+effects::RainPass* rain_pass(const effects::Renderer& r) {
     for (const auto& p : r.passes())
-        if (auto* rain = dynamic_cast<const effects::RainPass*>(p.get())) return rain;
+        if (auto* rain = dynamic_cast<effects::RainPass*>(p.get())) return rain;
     return nullptr;
 }
 
@@ -87,13 +87,13 @@ TEST_F(RainRenderTest, CompressedTwoDMetaballsFollowTheThreeDReference) {
     size_t wet = 0;
     const double angle = effects::mean_normal_angle_deg(fast, slow, wet);
     EXPECT_GT(wet, 1500u);
-    EXPECT_LT(angle, 8.0);
-    // Without the compression merged drops spike: the error grows.
+    EXPECT_LT(angle, 6.5);  // 5.9 measured; the 5 degree target is not met (see README)
+    // Without the compression merged drops spike: the error more than doubles.
     effects::HeightCompression none;
     none.steps = 0;
     map.update(scene, size, 1.0f, none);
     const double uncompressed = effects::mean_normal_angle_deg(read_surface(map), slow, wet);
-    EXPECT_GT(uncompressed, angle);
+    EXPECT_GT(uncompressed, 2.0 * angle);
     // The wet areas agree: both see the same drops.
     size_t wet_fast = 0, wet_slow = 0;
     for (size_t k = 0; k < fast.size(); ++k) {
@@ -126,10 +126,16 @@ TEST_F(RainRenderTest, DriversViewInTheRainShowsDropsOnTheGlassOnly) {
     effects::Renderer dry_r(dry->level.scene, *dry->world), wet_r(wet->level.scene, *wet->world);
     game::FrameCapture a(kWidth, kHeight), b(kWidth, kHeight);
     dry_r.render(*dry->world, a.output());
-    wet_r.render(*wet->world, b.output());
-    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     EXPECT_FALSE(rain_pass(dry_r)->drew_last_frame());  // dry glass, parked wipers: nothing to do
-    EXPECT_TRUE(rain_pass(wet_r)->drew_last_frame());
+    // The same rainy world with the pass switched off, then on.
+    effects::RainPass* pass = rain_pass(wet_r);
+    pass->look().enabled = false;
+    wet_r.render(*wet->world, a.output());
+    EXPECT_FALSE(pass->drew_last_frame());
+    pass->look().enabled = true;
+    wet_r.render(*wet->world, b.output());
+    EXPECT_TRUE(pass->drew_last_frame());
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     const game::ImageRGBA8 img_dry = a.read(), img_wet = b.read();
     maybe_write(img_dry, "driver_dry.png");
     maybe_write(img_wet, "driver_rain.png");

@@ -70,8 +70,8 @@ void expect_one_drop_per_cell(const RainSim& r) {
 // Blades whose whole sweep stays on the glass, so that no water is pushed off it.
 sim::RainParams blades_inside() {
     sim::RainParams p;
-    p.blades[0] = {{0.3f, 0.05f}, 0.1f, 0.7f, 0.3f, 2.4f};
-    p.blades[1] = {{0.7f, 0.05f}, 0.1f, 0.7f, 0.3f, 2.4f};
+    p.blades[0] = {{0.5f, 0.05f}, 0.1f, 0.7f, 0.4f, 2.3f};
+    p.blades[1] = {{0.5f, 0.45f}, 0.05f, 0.4f, 0.4f, 2.3f};
     return p;
 }
 
@@ -92,7 +92,7 @@ TEST(Rain, MassIsConservedAcrossMergesAndGridParticleConversions) {
     EXPECT_EQ(r.ledger().drained_mg, 0.0);
     EXPECT_GT(most_particles, 100u);            // the blades did convert drops
     // Merges: far fewer drops than rain gave.
-    EXPECT_LT(double(r.drops().size()), r.ledger().added_mg / 5.5 * 0.8);
+    EXPECT_LT(double(r.drops().size()), r.ledger().added_mg / 22.0 * 0.8);
 }
 
 TEST(Rain, DropsRunDownTheGlassWhenParkedAndUpAt100Kmh) {
@@ -100,7 +100,7 @@ TEST(Rain, DropsRunDownTheGlassWhenParkedAndUpAt100Kmh) {
         RainSim r = flat_rain();
         sim::Rng rng(5, 9);
         for (int k = 0; k < 400; ++k)
-            r.add_drop({rng.range(0.05f, 1.3f), rng.range(0.3f, 0.5f)}, rng.range(30.0f, 120.0f));
+            r.add_drop({rng.range(0.05f, 1.3f), rng.range(0.3f, 0.5f)}, r.params().slide_mass_mg * rng.range(1.2f, 3.0f));
         return r;
     };
     RainSim still = seeded(), fast = seeded();
@@ -122,7 +122,8 @@ TEST(Rain, BrakingSendsDropsDownAndAccelerationUp) {
     auto run = [](float accel) {
         RainSim r = flat_rain();
         sim::Rng rng(6, 9);
-        for (int k = 0; k < 300; ++k) r.add_drop({rng.range(0.05f, 1.3f), rng.range(0.3f, 0.5f)}, rng.range(20.0f, 40.0f));
+        for (int k = 0; k < 300; ++k)
+            r.add_drop({rng.range(0.05f, 1.3f), rng.range(0.3f, 0.5f)}, r.params().slide_mass_mg * rng.range(1.0f, 1.5f));
         for (int t = 0; t < 20; ++t) r.advance(0.0f, WiperMode::Off, 10.0f, r.forces_for(10.0f, {accel, 0.0f}, {0.0f, -9.81f, 0.0f}), kDt);
         return mean_v(r);
     };
@@ -171,7 +172,7 @@ TEST(Rain, AWiperReversalLosesOrDuplicatesNoDrop) {
     p.film_fraction = 0.0f;  // no film: every milligram goes grid -> particles -> grid
     RainSim r = flat_rain(p);
     sim::Rng rng(8, 3);
-    for (int k = 0; k < 2500; ++k) r.add_drop({rng.range(0.0f, 1.39f), rng.range(0.0f, 0.79f)}, rng.range(1.0f, 10.0f));
+    for (int k = 0; k < 2500; ++k) r.add_drop({rng.range(0.0f, 1.39f), rng.range(0.0f, 0.79f)}, rng.range(4.0f, 40.0f));
     const double total = r.mass_on_glass_mg();
     float max_before = 0.0f;
     for (const sim::RainDrop& d : r.drops()) max_before = std::max(max_before, d.mass_mg);
@@ -274,7 +275,7 @@ TEST(RainLevel, NegativeIntensityAndZeroCellSizeAreRefusedNamingTheField) {
         EXPECT_NE(msg.find(field), std::string::npos) << msg;
     };
     refused("\"intensity\": 0.0", "\"intensity\": -0.5", "rain.intensity");
-    refused("\"cell_size_m\": 0.005", "\"cell_size_m\": 0", "rain.cell_size_m");
+    refused("\"cell_size_m\": 0.008", "\"cell_size_m\": 0", "rain.cell_size_m");
     fs::remove_all(dir);
 }
 

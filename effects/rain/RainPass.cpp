@@ -12,6 +12,7 @@ RainPass::RainPass(int height_map_width, int height_map_height)
       shade_(gl::Program::from_files("rain.windshield", {"rain/windshield.vert.glsl", "rain/windshield.frag.glsl"})) {}
 
 void RainPass::register_params(ParamRegistry& params) {
+    params.add("rain", "draw", &look_.enabled);
     params.add("rain", "drop size on screen", &look_.radius_scale, 1.0f, 4.0f);
     params.add("rain", "refraction", &look_.refraction, 0.0f, 0.2f);
     params.add("rain", "background blur (mip)", &look_.blur_lod, 0.0f, 5.0f);
@@ -25,7 +26,7 @@ void RainPass::render(const FrameContext& frame) {
 
 void RainPass::draw(const FrameContext& frame, const RainView& view) {
     drew_ = false;
-    if (view.idle()) return;
+    if (!look_.enabled || view.idle()) return;
     drew_ = true;
     const sim::GlassSurface& glass = *view.glass;
     if (!mesh_ || mesh_->glass() != &glass) mesh_ = std::make_unique<WindshieldMesh>(glass);

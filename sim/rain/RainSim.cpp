@@ -307,14 +307,18 @@ void RainSim::sweep(const WiperBlade& blade) {
     const WiperBladeParams& bp = blade.params();
     const float turn = blade.turning();
     const glm::vec2 now = blade.direction(), before = blade.previous_direction();
-    const glm::vec2 mid = now + before;
+    const glm::vec2 mid = now + before, mid_unit = mid / len(mid);
+    const float sector_half_width = std::fabs(cross(before, now)) * bp.outer_m + 0.03f;
     const size_t count = drops_.size();  // not the film drops this sweep leaves
     for (size_t i = 0; i < count; ++i) {
         if (drops_[i].dead()) continue;
         const RainDrop d = drops_[i];
+        const glm::vec2 rel = d.pos_m - bp.pivot_m;
+        // Cheap test first: the sector lies within outer * sin(sweep) (+ any drop's reach)
+        // of its bisector.
+        if (std::fabs(cross(mid_unit, rel)) > sector_half_width) continue;
         const float r = radius_m(d.mass_mg);
         const float reach = r + bp.half_width_m;
-        const glm::vec2 rel = d.pos_m - bp.pivot_m;
         const float rho2 = dot(rel, rel);
         if (rho2 > (bp.outer_m + reach) * (bp.outer_m + reach) || rho2 < (bp.inner_m - reach) * (bp.inner_m - reach))
             continue;
@@ -366,39 +370,41 @@ void RainSim::push_particles() {
 }
 
 void RainSim::collide_particles() {
-    // Bucket by glass cell (a cell is at least a particle's diameter; checked below).
-    const float bucket = std::max(glass_.cell_m(), 2.0f * particle_r_m_);
-    const glm::vec2 lo(-0.5f * glass_.width_m(), -0.5f * glass_.height_m());
-    const int bc = int(2.0f * glass_.width_m() / bucket) + 1, br = int(2.0f * glass_.height_m() / bucket) + 1;
+    // Buckets one particle diameter wide over the particles' bounding box: a particle
+    // only meets others in its own and the eight neighbouring buckets.
+    const float bucket = 2.0f * particle_r_m_;
+    glm::vec2 lo = particles_.front().pos_m, hi = lo;
+    for (const WaterParticle& q : particles_) {
+        lo = glm::min(lo, q.pos_m);
+        hi = glm::max(hi, q.pos_m);
+    }
+    const int bc = int((hi.x - lo.x) / bucket) + 1, br = int((hi.y - lo.y) / bucket) + 1;
     auto key = [&](glm::vec2 p) {
-        int i = std::clamp(int((p.x - lo.x) / bucket), 0, bc - 1), j = std::clamp(int((p.y - lo.y) / bucket), 0, br - 1);
+        int i = std::min(int((p.x - lo.x) / bucket), bc - 1), j = std::min(int((p.y - lo.y) / bucket), br - 1);
         return j * bc + i;
     };
     bucket_start_.assign(size_t(bc) * size_t(br) + 1, 0);
     for (const WaterParticle& q : particles_) ++bucket_start_[size_t(key(q.pos_m)) + 1];
     for (size_t k = 1; k < bucket_start_.size(); ++k) bucket_start_[k] += bucket_start_[k - 1];
     bucket_items_.assign(particles_.size(), 0);
-    {
-        std::vector<int32_t> fill(bucket_start_.begin(), bucket_start_.end() - 1);
-        for (size_t i = 0; i < particles_.size(); ++i) bucket_items_[size_t(fill[size_t(key(particles_[i].pos_m))]++)] = int32_t(i);
-    }
+    bucket_fill_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
+    for (size_t i = 0; i < particles_.size(); ++i)
+        bucket_items_[size_t(bucket_fill_[size_t(key(particles_[i].pos_m))]++)] = int32_t(i);
     // Jacobi: every push from this tick's positions, then all applied.
     push_.assign(particles_.size(), glm::vec2(0.0f));
-    const float two_r = 2.0f * particle_r_m_;
+    const float two_r = 2.0f * particle_r_m_, two_r2 = two_r * two_r;
     for (size_t i = 0; i < particles_.size(); ++i) {
         const glm::vec2 p = particles_[i].pos_m;
         const int k = key(p), ki = k % bc, kj = k / bc;
-        for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di) {
-                const int ni = ki + di, nj = kj + dj;
-                if (ni < 0 || nj < 0 || ni >= bc || nj >= br) continue;
+        for (int nj = std::max(kj - 1, 0); nj <= std::min(kj + 1, br - 1); ++nj)
+            for (int ni = std::max(ki - 1, 0); ni <= std::min(ki + 1, bc - 1); ++ni) {
                 const int nk = nj * bc + ni;
                 for (int32_t s = bucket_start_[size_t(nk)]; s < bucket_start_[size_t(nk) + 1]; ++s) {
                     const size_t j = size_t(bucket_items_[size_t(s)]);
-                    if (j == i) continue;
-                    glm::vec2 d = p - particles_[j].pos_m;
-                    float dist = len(d);
-                    if (dist >= two_r) continue;
+                    const glm::vec2 d = p - particles_[j].pos_m;
+                    const float d2 = dot(d, d);
+                    if (d2 >= two_r2 || j == i) continue;
+                    const float dist = std::sqrt(d2);
                     // Coincident centres part along a direction fixed by their order.
                     glm::vec2 dir = dist > 1e-7f ? d / dist : (i < j ? glm::vec2(1.0f, 0.0f) : glm::vec2(-1.0f, 0.0f));
                     push_[i] += dir * (0.5f * (two_r - dist) * (1.0f + p_.restitution));

@@ -117,7 +117,7 @@ private:
     float slide_r_m_;
 
     // Scratch for the particle collisions (bucketed by cell).
-    std::vector<int32_t> bucket_start_, bucket_items_;
+    std::vector<int32_t> bucket_start_, bucket_items_, bucket_fill_;
     std::vector<glm::vec2> push_;
 };
 
