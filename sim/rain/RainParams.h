@@ -47,7 +47,7 @@ struct RainParams {
     float particle_mass_mg = 20.0f;
     float band_m = 0.03f;                 // particles within this of a blade stay particles
     float restitution = 0.2f;
-    int collision_iterations = 2;
+    int collision_iterations = 1;         // pairwise pushes per tick (the seed: one)
     float defer_mass_mg = 280.0f;         // conversion back waits while a drop this heavy...
     int defer_search_cells = 2;           // ...is within this many cells of the target
     float film_fraction = 0.04f;          // of a swept drop left behind as a trailing film drop

@@ -136,9 +136,9 @@ void RainSim::advance(float intensity, WiperMode wipers, float car_speed_mps, co
     for (const WiperBlade& b : blades_)
         if (b.turning() != 0.0f) sweep(b);
     if (!particles_.empty()) {
-        push_particles();
+        push_particles(true);
         for (int k = 0; k < p_.collision_iterations; ++k) collide_particles();
-        push_particles();  // the blade has the last word: nothing is left inside it
+        push_particles(false);  // the blade has the last word: nothing is left inside it
         particles_to_grid();
     }
     compact();
@@ -345,8 +345,11 @@ void RainSim::sweep(const WiperBlade& blade) {
     }
 }
 
-void RainSim::push_particles() {
-    // A particle in or behind the blade goes out along the blade's normal to touch it.
+void RainSim::push_particles(bool carry) {
+    // A particle the blade reached goes out along the blade's normal to touch it. When
+    // the blade moves on (carry), a particle that was already ahead of it, in the bead,
+    // keeps its distance ahead: the bead is pushed along as a whole, layers and all,
+    // not flattened against the rubber.
     const float contact = particle_r_m_;
     for (const WiperBlade& b : blades_) {
         const WiperBladeParams& bp = b.params();
@@ -357,14 +360,16 @@ void RainSim::push_particles() {
             const float along = dot(rel, now);
             if (along < bp.inner_m || along > bp.outer_m) continue;  // past the ends: spills
             const float s = cross(now, rel);
-            float side = turn;
+            float side = turn, target = reach;
             if (turn == 0.0f) {
                 if (std::fabs(s) >= reach) continue;
                 side = s >= 0.0f ? 1.0f : -1.0f;
-            } else if (!(side * s < reach && side * cross(before, rel) >= -reach)) {
-                continue;  // ahead of the blade, or behind where it started this tick
+            } else {
+                const float ahead_before = side * cross(before, rel) - reach;
+                if (side * s >= reach || ahead_before < -reach) continue;  // not reached, or behind where it started
+                if (carry) target = reach + std::max(ahead_before, 0.0f);
             }
-            q.pos_m += normal * (side * reach - s);
+            q.pos_m += normal * (side * target - s);
         }
     }
 }

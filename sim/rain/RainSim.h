@@ -92,7 +92,7 @@ private:
     void move_drops(const RainForces& forces, float dt);
     bool step_cell(size_t i);  // false when the drop left the glass
     void sweep(const WiperBlade& blade);
-    void push_particles();
+    void push_particles(bool carry);
     void collide_particles();
     void particles_to_grid();
     void compact();
