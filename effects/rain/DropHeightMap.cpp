@@ -8,7 +8,7 @@ namespace effects {
 
 namespace {
 constexpr int kProfileTexels = 256;
-constexpr float kProfileReach = 3.0f;  // in radii: N(3R) = 1/82, well under T
+constexpr float kProfileReach = 2.5f;  // in radii: N(2.5R) = 1/40, well under T
 }  // namespace
 
 DropHeightMap::DropHeightMap(int width, int height)
@@ -28,7 +28,7 @@ DropHeightMap::DropHeightMap(int width, int height)
     profile_.set_filter(GL_LINEAR, GL_LINEAR);
     profile_.set_wrap(GL_CLAMP_TO_EDGE);
 
-    density_ = gl::Texture::create_2d("rain.density", GL_RG32F, width, height);
+    density_ = gl::Texture::create_2d("rain.density", GL_RG16F, width, height);
     surface_ = gl::Texture::create_2d("rain.surface", GL_RGBA16F, width, height);
     for (gl::Texture* t : {&density_, &surface_}) {
         t->set_filter(GL_LINEAR, GL_LINEAR);
