@@ -36,14 +36,13 @@ public:
 
     // rg: the normal's u and v components (z is implied), b: height in mm, a: 1 on water.
     const gl::Texture& surface() const { return surface_; }
-    // r: summed density, g: summed density times radius in mm.
-    const gl::Texture& density() const { return density_; }
     int width() const { return width_; }
     int height() const { return height_; }
 
 private:
     int width_, height_;
-    gl::Texture profile_, density_, surface_;
+    gl::Texture profile_, surface_;
+    gl::Texture density_;  // r: summed density, g: summed density times radius in mm
     gl::Framebuffer density_fbo_, surface_fbo_;
     gl::Program splat_, shape_;
     gl::VertexArray vao_;

@@ -36,7 +36,6 @@ public:
     void draw(const FrameContext& frame, const RainView& view);
 
     RainLook& look() { return look_; }
-    const DropHeightMap& height_map() const { return height_map_; }
     bool drew_last_frame() const { return drew_; }
 
 private:

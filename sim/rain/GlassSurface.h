@@ -49,8 +49,6 @@ public:
         return (glm::vec2(c) + 0.5f) * cell_m_;
     }
     const GlassCell& cell(int index) const { return cells_[size_t(index)]; }
-    const std::vector<glm::vec3>& lower_edge() const { return lower_; }
-    const std::vector<glm::vec3>& upper_edge() const { return upper_; }
 
     // A flat glass of the given size and rake (from the horizontal), facing +x and
     // rising towards -x like a windshield; for tests and benchmarks.

@@ -82,10 +82,8 @@ public:
     const WiperMotor& motor() const { return motor_; }
     const RainLedger& ledger() const { return ledger_; }
     double mass_on_glass_mg() const;
-    uint64_t ticks() const { return tick_; }
     // A drop's contact radius: a hemisphere of its volume.
     static float radius_m(float mass_mg);
-    float particle_radius_m() const { return particle_r_m_; }
 
 private:
     void rain(float intensity, float car_speed_mps, float dt);

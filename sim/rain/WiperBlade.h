@@ -36,8 +36,6 @@ public:
     glm::vec2 previous_direction() const { return {std::cos(previous_rad_), std::sin(previous_rad_)}; }
     // +1 turning counter-clockwise this tick, -1 clockwise, 0 still.
     float turning() const { return angle_rad_ > previous_rad_ ? 1.0f : angle_rad_ < previous_rad_ ? -1.0f : 0.0f; }
-    glm::vec2 inner_end() const { return p_.pivot_m + direction() * p_.inner_m; }
-    glm::vec2 outer_end() const { return p_.pivot_m + direction() * p_.outer_m; }
 
 private:
     WiperBladeParams p_;
