@@ -8,6 +8,7 @@
 #include "effects/Renderer.h"
 #include "game/bench/BenchReport.h"
 #include "game/bench/EnergyBench.h"
+#include "game/bench/RainBench.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
@@ -128,6 +129,8 @@ int bench_command(const std::vector<std::string>& argv) {
     bench_render(report, 1280, 720, quick ? 3 : 8);
     std::cerr << "bench: energy\n";
     bench_energy(report, quick);
+    std::cerr << "bench: rain\n";
+    bench_rain(report, quick);
     report.add({"memory", "peak resident after 1280x720 frames", peak_resident_mib(), "MiB", 1024.0});
 
     report.print_table();

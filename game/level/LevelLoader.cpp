@@ -156,8 +156,10 @@ public:
             level.sun_direction = glm::normalize(d);
         }
         if (const json* rain = LevelReader::optional(doc_, "rain")) {
-            r_.object(*rain, "rain", {"intensity"});
+            r_.object(*rain, "rain", {"intensity", "cell_size_m"});
             level.rain_intensity = r_.number_in(r_.required(*rain, "rain", "intensity"), "rain.intensity", 0.0f, 1.0f);
+            if (const json* cell = LevelReader::optional(*rain, "cell_size_m"))
+                level.rain.cell_size_m = r_.number_in(*cell, "rain.cell_size_m", 0.001f, 0.05f);
         }
         if (const json* water = LevelReader::optional(doc_, "water")) water_grid(*water, level);
         placements.push_back(placement(r_.required(doc_, "", "car"), "car", false));
@@ -283,6 +285,37 @@ sim::Aabb world_box(const effects::MeshData& mesh, const glm::mat4& transform) {
     return box;
 }
 
+// The rain's glass from the car model's "windshield" mesh: a strip of quads across
+// the car, two points (lower and upper edge) at each z, left (-z) to right. A car
+// without one has no windshield rain; a mesh of another shape is refused.
+void windshield_edges(const effects::Model& car, const std::string& where, const LevelReader& r, sim::RainDesc& rain) {
+    const effects::MeshData* glass = nullptr;
+    for (const effects::MeshData& m : car.meshes)
+        if (m.name == "windshield") glass = &m;
+    if (!glass) return;
+    std::vector<glm::vec3> points;
+    for (const effects::MeshVertex& v : glass->vertices) {
+        bool seen = false;
+        for (glm::vec3 q : points)
+            seen = seen || (std::fabs(q.x - v.position.x) < 1e-5f && std::fabs(q.y - v.position.y) < 1e-5f &&
+                            std::fabs(q.z - v.position.z) < 1e-5f);
+        if (!seen) points.push_back(v.position);
+        if (points.size() > 4096) r.fail(where, "the windshield mesh has more than 4096 distinct points");
+    }
+    std::sort(points.begin(), points.end(), [](glm::vec3 a, glm::vec3 b) { return a.z < b.z || (a.z == b.z && a.y < b.y); });
+    for (size_t i = 0; i < points.size();) {
+        size_t j = i;
+        while (j < points.size() && points[j].z - points[i].z < 1e-4f) ++j;
+        if (j - i != 2)
+            r.fail(where, "the windshield mesh must be a strip of quads across the car (two points at each z), found " +
+                              std::to_string(j - i) + " at z = " + std::to_string(points[i].z));
+        rain.glass_lower.push_back(points[i]);
+        rain.glass_upper.push_back(points[i + 1]);
+        i = j;
+    }
+    if (rain.glass_lower.size() < 2) r.fail(where, "the windshield mesh must span at least two points across the car");
+}
+
 }  // namespace
 
 fs::path resolve_level_path(std::string_view name_or_path) {
@@ -354,6 +387,9 @@ LoadedLevel load_level_text(const fs::path& path, const std::string& text) {
         model_of_asset[key] = int(out.scene.models.size()) - 1;
     }
     out.content_hash = content.value();
+
+    windshield_edges(out.scene.models[size_t(model_of_asset.at(fs::path(placements[0].asset).lexically_normal().generic_string()))],
+                     placements[0].where + ".asset", r, out.sim.rain);
 
     for (size_t i = 0; i < placements.size(); ++i) {
         const Placement& p = placements[i];

@@ -46,6 +46,14 @@ struct WaterGridDesc {
     float damping_per_s = 0.25f;
 };
 
+// The windshield rain's glass (specs/rain.md): the car's windshield as two polylines
+// in car model space, its lower and upper edge from the car's left to its right, the
+// glass ruled between them; and the size of the drop grid's square cells.
+struct RainDesc {
+    float cell_size_m = 0.008f;
+    std::vector<glm::vec3> glass_lower, glass_upper;  // empty: the car has no windshield
+};
+
 struct LevelDesc {
     std::string id;
     uint64_t seed = 1;
@@ -70,6 +78,7 @@ struct LevelDesc {
 
     glm::vec3 sun_direction{0.4f, 0.8f, 0.3f};  // towards the sun, normalised by the loader
     float rain_intensity = 0.0f;                // 0..1 at start
+    RainDesc rain;
     WaterGridDesc water;
 };
 

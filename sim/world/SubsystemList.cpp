@@ -3,6 +3,7 @@
 #include "sim/objects/ThrownObjects.h"
 #include "sim/player/CameraRig.h"
 #include "sim/player/Player.h"
+#include "sim/rain/RainSim.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
 #include "sim/water/WaterSim.h"
@@ -30,6 +31,12 @@ void add_standard_subsystems(World& world) {
         auto water = std::make_unique<WaterSim>(params, level, level.seed);
         world.set_sea(water.get());
         world.add(std::move(water));
+    }
+    if (!level.rain.glass_lower.empty()) {
+        // After the car: drops feel this tick's speed and acceleration.
+        RainParams params;
+        params.cell_size_m = level.rain.cell_size_m;
+        world.add(std::make_unique<RainSim>(params, level.rain.glass_lower, level.rain.glass_upper, level.seed));
     }
     world.add(std::make_unique<CameraRig>());
 }

@@ -1,0 +1,45 @@
+#pragma once
+// A wiper blade in the glass's coordinates (specs/rain.md, "Wipers"): a segment on an
+// arm rotating about a pivot, between radii inner_m and outer_m, swept from its rest
+// angle by a fraction 0..1 of its sweep. The blades of a car share one motor
+// (WiperMotor), so all of them are at the same fraction.
+#include <cmath>
+
+#include <glm/vec2.hpp>
+
+namespace sim {
+
+struct WiperBladeParams {
+    glm::vec2 pivot_m{0.0f};
+    float inner_m = 0.1f, outer_m = 0.6f;  // the rubber along the arm
+    float rest_rad = 0.0f;                 // angle from +u when parked
+    float sweep_rad = 2.0f;                // signed: positive sweeps counter-clockwise (towards +v from +u)
+    float half_width_m = 0.006f;           // of the rubber
+};
+
+class WiperBlade {
+public:
+    explicit WiperBlade(WiperBladeParams params)
+        : p_(params), angle_rad_(params.rest_rad), previous_rad_(params.rest_rad) {}
+
+    // Moves the blade to rest + fraction * sweep; the previous angle is kept for the
+    // sweep test of this tick.
+    void set_fraction(float fraction) {
+        previous_rad_ = angle_rad_;
+        angle_rad_ = p_.rest_rad + fraction * p_.sweep_rad;
+    }
+
+    const WiperBladeParams& params() const { return p_; }
+    float angle_rad() const { return angle_rad_; }
+    float previous_rad() const { return previous_rad_; }
+    glm::vec2 direction() const { return {std::cos(angle_rad_), std::sin(angle_rad_)}; }
+    glm::vec2 previous_direction() const { return {std::cos(previous_rad_), std::sin(previous_rad_)}; }
+    // +1 turning counter-clockwise this tick, -1 clockwise, 0 still.
+    float turning() const { return angle_rad_ > previous_rad_ ? 1.0f : angle_rad_ < previous_rad_ ? -1.0f : 0.0f; }
+
+private:
+    WiperBladeParams p_;
+    float angle_rad_, previous_rad_;
+};
+
+}  // namespace sim

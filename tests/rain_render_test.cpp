@@ -1,0 +1,180 @@
+// The windshield rain pass on a real headless context: one drop's height map against
+// the hemisphere it stands for, the merged-drop scene against the 3D metaball
+// reference, and the harbour car in the rain from the driver's seat (the glass shows
+// the drops, the view outside it is untouched, the chase view costs nothing). Set
+// SPINDRIFT_RAIN_PNG_DIR to write the frames as PNGs.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "effects/Renderer.h"
+#include "effects/rain/DropHeightMap.h"
+#include "effects/rain/MetaballReference.h"
+#include "effects/rain/RainPass.h"
+#include "game/capture/FrameCapture.h"
+#include "game/capture/ImageFiles.h"
+#include "game/platform/HeadlessContext.h"
+#include "game/session/GameSession.h"
+#include "sim/player/CameraRig.h"
+#include "sim/rain/RainSim.h"
+#include "sim/vehicle/Car.h"
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 180;
+
+std::vector<effects::SurfaceSample> read_surface(const effects::DropHeightMap& map) {
+    std::vector<float> rgba(size_t(map.width()) * size_t(map.height()) * 4);
+    glGetTextureImage(map.surface().id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+    std::vector<effects::SurfaceSample> out(size_t(map.width()) * size_t(map.height()));
+    for (size_t k = 0; k < out.size(); ++k) {
+        const float x = rgba[4 * k], y = rgba[4 * k + 1];
+        out[k] = {{x, y, std::sqrt(std::max(1.0f - x * x - y * y, 0.0f))}, rgba[4 * k + 3] > 0.5f ? rgba[4 * k + 2] : 0.0f};
+    }
+    return out;
+}
+
+void maybe_write(const game::ImageRGBA8& img, const char* name) {
+    if (const char* dir = std::getenv("SPINDRIFT_RAIN_PNG_DIR")) {
+        std::filesystem::create_directories(dir);
+        game::write_png(std::filesystem::path(dir) / name, img);
+    }
+}
+
+effects::RainPass* rain_pass(const effects::Renderer& r) {
+    for (const auto& p : r.passes())
+        if (auto* rain = dynamic_cast<effects::RainPass*>(p.get())) return rain;
+    return nullptr;
+}
+
+class RainRenderTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
+    static void TearDownTestSuite() { context_.reset(); }
+    static std::unique_ptr<game::HeadlessContext> context_;
+};
+std::unique_ptr<game::HeadlessContext> RainRenderTest::context_;
+
+TEST_F(RainRenderTest, ALoneDropIsAHemisphereOfItsRadius) {
+    const glm::vec2 glass(0.064f, 0.032f);  // 0.125 mm texels
+    const float r = 0.004f;
+    const effects::RainMetaball drop{{0.032f, 0.016f}, r, 0.0f};
+    effects::DropHeightMap map(512, 256);
+    map.update(std::span(&drop, 1), glass, 1.0f);
+    const std::vector<effects::SurfaceSample> s = read_surface(map);
+    const auto at = [&](float u_m, float v_m) { return s[size_t(v_m / glass.y * 256.0f) * 512 + size_t(u_m / glass.x * 512.0f)]; };
+    EXPECT_NEAR(at(0.032f, 0.016f).height_mm, 4.0f, 0.1f);
+    EXPECT_GT(at(0.032f + 0.95f * r, 0.016f).height_mm, 0.0f);  // wet out to the radius...
+    EXPECT_EQ(at(0.032f + 1.1f * r, 0.016f).height_mm, 0.0f);   // ...and dry beyond
+    // Normals lean outwards, symmetric left and right.
+    EXPECT_GT(at(0.032f + 0.6f * r, 0.016f).normal.x, 0.3f);
+    EXPECT_LT(at(0.032f - 0.6f * r, 0.016f).normal.x, -0.3f);
+    EXPECT_GT(at(0.032f, 0.016f + 0.6f * r).normal.y, 0.3f);
+}
+
+TEST_F(RainRenderTest, CompressedTwoDMetaballsFollowTheThreeDReference) {
+    glm::vec2 size;
+    const std::vector<effects::RainMetaball> scene = effects::merged_drop_scene(size);
+    effects::DropHeightMap map(256, 128);
+    map.update(scene, size, 1.0f);
+    const std::vector<effects::SurfaceSample> fast = read_surface(map);
+    const std::vector<effects::SurfaceSample> slow = effects::reference_surface(scene, size, 256, 128);
+    size_t wet = 0;
+    const double angle = effects::mean_normal_angle_deg(fast, slow, wet);
+    EXPECT_GT(wet, 1500u);
+    EXPECT_LT(angle, 6.5);  // 5.9 measured; the 5 degree target is not met (see README)
+    // Without the compression merged drops spike: the error more than doubles.
+    effects::HeightCompression none;
+    none.steps = 0;
+    map.update(scene, size, 1.0f, none);
+    const double uncompressed = effects::mean_normal_angle_deg(read_surface(map), slow, wet);
+    EXPECT_GT(uncompressed, 2.0 * angle);
+    // The wet areas agree: both see the same drops.
+    size_t wet_fast = 0, wet_slow = 0;
+    for (size_t k = 0; k < fast.size(); ++k) {
+        wet_fast += fast[k].height_mm > 0.0f;
+        wet_slow += slow[k].height_mm > 0.0f;
+    }
+    EXPECT_NEAR(double(wet_fast), double(wet_slow), 0.1 * double(wet_slow));
+}
+
+// The harbour car parked in the driver's view, `taps` presses of rain_up, for `ticks`.
+std::unique_ptr<game::GameSession> parked_in_rain(int rain_taps, int ticks, bool driver = true) {
+    auto s = std::make_unique<game::GameSession>(game::GameSession::open("harbour", 1));
+    for (int t = 0; t < ticks; ++t) {
+        sim::TickInput in;
+        in.set(sim::Control::Camera, driver && t == 0);
+        in.set(sim::Control::RainUp, t >= 2 && t < 2 + 2 * rain_taps && t % 2 == 0);
+        s->world->step(in);
+    }
+    return s;
+}
+
+float luminance(const game::ImageRGBA8& img, size_t k) {
+    const uint8_t* p = &img.pixels[4 * k];
+    return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+}
+
+TEST_F(RainRenderTest, DriversViewInTheRainShowsDropsOnTheGlassOnly) {
+    auto dry = parked_in_rain(0, 200), wet = parked_in_rain(4, 200);
+    ASSERT_GT(wet->world->get<sim::RainSim>().drops().size(), 100u);
+    effects::Renderer dry_r(dry->level.scene, *dry->world), wet_r(wet->level.scene, *wet->world);
+    game::FrameCapture a(kWidth, kHeight), b(kWidth, kHeight);
+    dry_r.render(*dry->world, a.output());
+    EXPECT_FALSE(rain_pass(dry_r)->drew_last_frame());  // dry glass, parked wipers: nothing to do
+    // The same rainy world with the pass switched off, then on.
+    effects::RainPass* pass = rain_pass(wet_r);
+    pass->look().enabled = false;
+    wet_r.render(*wet->world, a.output());
+    EXPECT_FALSE(pass->drew_last_frame());
+    pass->look().enabled = true;
+    wet_r.render(*wet->world, b.output());
+    EXPECT_TRUE(pass->drew_last_frame());
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    const game::ImageRGBA8 img_dry = a.read(), img_wet = b.read();
+    maybe_write(img_dry, "driver_dry.png");
+    maybe_write(img_wet, "driver_rain.png");
+
+    // Where the windshield is on screen: project its glass.
+    const sim::RainSim& rain = wet->world->get<sim::RainSim>();
+    const effects::Camera cam =
+        effects::make_camera(wet->world->get<sim::CameraRig>().view(), float(kWidth) / float(kHeight));
+    const glm::mat4 car = wet->world->get<sim::Car>().pose().matrix();
+    int top_row = kHeight;  // the highest image row the glass reaches
+    for (float u = 0.0f; u <= 1.0f; u += 0.1f) {
+        glm::vec4 c = cam.view_proj * car * glm::vec4(rain.glass().point({u * rain.glass().width_m(), rain.glass().height_m()}), 1.0f);
+        top_row = std::min(top_row, int((0.5f - 0.5f * c.y / c.w) * float(kHeight)));
+    }
+    ASSERT_GT(top_row, 2) << "the glass should end below the top of the image";
+    size_t changed_glass = 0, glass = 0, changed_above = 0, above = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const size_t k = size_t(y) * kWidth + size_t(x);
+            const bool differs = std::fabs(luminance(img_dry, k) - luminance(img_wet, k)) > 6.0f;
+            if (y < top_row - 2) {
+                ++above;
+                changed_above += differs;
+            } else if (y > top_row + 4 && y < kHeight * 3 / 4) {
+                ++glass;
+                changed_glass += differs;
+            }
+        }
+    EXPECT_EQ(changed_above, 0u) << "of " << above << " pixels above the windshield";
+    EXPECT_GT(double(changed_glass), 0.05 * double(glass)) << changed_glass << " of " << glass << " pixels on the glass";
+}
+
+TEST_F(RainRenderTest, TheChaseViewDoesNotDrawTheRain) {
+    auto s = parked_in_rain(4, 120, false);
+    ASSERT_GT(s->world->get<sim::RainSim>().drops().size(), 50u);
+    effects::Renderer r(s->level.scene, *s->world);
+    game::FrameCapture out(kWidth, kHeight);
+    r.render(*s->world, out.output());
+    EXPECT_FALSE(rain_pass(r)->drew_last_frame());
+}
+
+}  // namespace
