@@ -33,7 +33,7 @@ void SceneLighting::set_line_lights(std::span<const LineLight> lights) {
         line_lights_ = gl::Buffer::create("lighting.line_lights", GLsizeiptr(bytes.size()), bytes.data());
     else
         line_lights_.update(0, bytes);
-    line_lights_.update(0, std::as_bytes(std::span(&count, 1)));
+    line_lights_.update(0, std::as_bytes(std::span(&count, 1)));  // the ivec4 count's x, as an int
 }
 
 void SceneLighting::apply_sky(const gl::Program& p) const {

@@ -32,7 +32,7 @@ public:
     static constexpr GLuint kEnvUnit = 14;
     static constexpr GLuint kShadowUnit = 15;
     static constexpr GLuint kLineLightBinding = 3;
-    static constexpr size_t kMaxLineLights = 16;
+    static constexpr size_t kMaxLineLights = 16;  // as lighting.glsl's kMaxLineLights
 
     SceneLighting(int env_size, int shadow_size);
 
