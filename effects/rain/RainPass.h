@@ -21,7 +21,7 @@ struct RainLook {
     bool enabled = true;        // off: the pass draws nothing (to compare with and without)
     float radius_scale = 3.5f;  // drops drawn this much wider than their contact radius, to read on screen
     float refraction = 0.08f;   // screen offset (of its height) per unit of normal tilt
-    float blur_lod = 2.5f;      // mip of the scene behind a drop at 360 lines: it is out of focus
+    float blur_lod = 2.5f;      // mip of the scene behind a drop 1 m from the eye, at 360 lines: out of focus
     float rim = 0.4f;           // darkening at a drop's steep edge (light bent away)
 };
 

@@ -17,7 +17,7 @@ void gather_rain_view(const sim::World& world, RainView& out) {
     out.driver_view = player && car && player->vehicle() == sim::Vehicle::Car && player->view() == sim::ViewMode::Driver;
     if (!rain || !out.driver_view) return;
     out.car_to_world = car->pose().matrix();
-    for (const sim::RainDrop& d : rain->drops()) out.metaballs.push_back({d.pos_m, sim::RainSim::radius_m(d.mass_mg), 0.0f});
+    for (const sim::RainDrop& d : rain->drops()) out.metaballs.push_back({d.pos_m, d.radius_m, 0.0f});
     for (const sim::WaterParticle& q : rain->particles())
         out.metaballs.push_back({q.pos_m, sim::RainSim::radius_m(q.mass_mg), 0.0f});
     for (const sim::WiperBlade& b : rain->blades())

@@ -77,7 +77,7 @@ void bench_sim(BenchReport& report, int ticks) {
 
 std::vector<effects::RainMetaball> metaballs_of(const sim::RainSim& rain) {
     std::vector<effects::RainMetaball> out;
-    for (const sim::RainDrop& d : rain.drops()) out.push_back({d.pos_m, sim::RainSim::radius_m(d.mass_mg), 0.0f});
+    for (const sim::RainDrop& d : rain.drops()) out.push_back({d.pos_m, d.radius_m, 0.0f});
     for (const sim::WaterParticle& q : rain.particles()) out.push_back({q.pos_m, sim::RainSim::radius_m(q.mass_mg), 0.0f});
     return out;
 }

@@ -12,7 +12,7 @@ uniform vec3 u_eye;
 uniform vec2 u_inv_viewport;
 uniform float u_aspect;
 uniform float u_refraction;
-uniform float u_blur_lod;
+uniform float u_blur_lod;  // mip of the scene behind a drop one metre from the eye
 uniform float u_rim;
 uniform int u_blade_count;
 uniform vec2 u_blade_pivot[2];
@@ -61,7 +61,10 @@ void main() {
 
         vec2 screen = gl_FragCoord.xy * u_inv_viewport;
         vec2 shift = -tilt * u_refraction * vec2(1.0 / u_aspect, 1.0);
-        vec3 behind = textureLod(u_behind, screen + shift, u_blur_lod).rgb;
+        // The eye is focused on the road: the glass, and the image a drop makes of what
+        // lies behind it, is out of focus by a blur circle growing as 1 / distance.
+        float lod = u_blur_lod + log2(1.0 / max(length(v_world - u_eye), 0.3));
+        vec3 behind = textureLod(u_behind, screen + shift, max(lod, 0.0)).rgb;
         behind *= mix(1.0 - u_rim, 1.0, pow(nz, 3.0));  // light leaving a steep edge is bent away
 
         vec3 r = reflect(view, n);

@@ -161,12 +161,14 @@ int32_t RainSim::new_drop(glm::vec2 pos_m, float mass_mg, uint32_t flags) {
         RainDrop& d = drops_[size_t(at)];
         d.vel_mps *= d.mass_mg / (d.mass_mg + mass_mg);
         d.mass_mg += mass_mg;
+        d.radius_m = radius_m(d.mass_mg);
         d.flags &= ~RainDrop::kTrail;  // fed, it is a drop again
         return at;
     }
     RainDrop d;
     d.pos_m = pos_m;
     d.mass_mg = mass_mg;
+    d.radius_m = radius_m(mass_mg);
     d.cell = cell;
     d.flags = flags;
     drops_.push_back(d);
@@ -208,6 +210,7 @@ void RainSim::move_drops(const RainForces& forces, float dt) {
             RainDrop& d = drops_[i];
             const float lost = std::min(d.mass_mg, p_.trail_shrink_mg_per_s * dt);
             d.mass_mg -= lost;
+            d.radius_m = radius_m(d.mass_mg);
             ledger_.evaporated_mg += lost;
             if (d.mass_mg <= p_.trail_vanish_mg) {
                 ledger_.evaporated_mg += d.mass_mg;
@@ -220,7 +223,7 @@ void RainSim::move_drops(const RainForces& forces, float dt) {
         const GlassCell& c = glass_.cell(d.cell);
         // Per unit mass: gravity and inertia as they are, air by area over mass (1 / r),
         // holding by contact line over mass (1 / r^2), stronger on high affinity.
-        const float rr = slide_r_m_ / radius_m(d.mass_mg);
+        const float rr = slide_r_m_ / d.radius_m;
         const glm::vec3 f = forces.body + forces.air * rr;
         const glm::vec2 a(dot3(f, c.tangent_u), dot3(f, c.tangent_v));
         const float drive = len(a);
@@ -294,6 +297,7 @@ bool RainSim::step_cell(size_t i) {
         o.mass_mg = 0.0f;
         kill_drop(size_t(other));
     }
+    if (trail_mass > 0.0f || other >= 0) d.radius_m = radius_m(d.mass_mg);
     drops_[i] = d;
     cell_drop_[size_t(to)] = int32_t(i);
     if (trail_mass > 0.0f) {
@@ -317,7 +321,7 @@ void RainSim::sweep(const WiperBlade& blade) {
         // Cheap test first: the sector lies within outer * sin(sweep) (+ any drop's reach)
         // of its bisector.
         if (std::fabs(cross(mid_unit, rel)) > sector_half_width) continue;
-        const float r = radius_m(d.mass_mg);
+        const float r = d.radius_m;
         const float reach = r + bp.half_width_m;
         const float rho2 = dot(rel, rel);
         if (rho2 > (bp.outer_m + reach) * (bp.outer_m + reach) || rho2 < (bp.inner_m - reach) * (bp.inner_m - reach))
@@ -395,27 +399,38 @@ void RainSim::collide_particles() {
     bucket_fill_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
     for (size_t i = 0; i < particles_.size(); ++i)
         bucket_items_[size_t(bucket_fill_[size_t(key(particles_[i].pos_m))]++)] = int32_t(i);
-    // Jacobi: every push from this tick's positions, then all applied.
+    // Jacobi: every push from this tick's positions, then all applied. Each pair once:
+    // a bucket with itself and with its four neighbours ahead (right, and the row above).
     push_.assign(particles_.size(), glm::vec2(0.0f));
     const float two_r = 2.0f * particle_r_m_, two_r2 = two_r * two_r;
-    for (size_t i = 0; i < particles_.size(); ++i) {
-        const glm::vec2 p = particles_[i].pos_m;
-        const int k = key(p), ki = k % bc, kj = k / bc;
-        for (int nj = std::max(kj - 1, 0); nj <= std::min(kj + 1, br - 1); ++nj)
-            for (int ni = std::max(ki - 1, 0); ni <= std::min(ki + 1, bc - 1); ++ni) {
-                const int nk = nj * bc + ni;
-                for (int32_t s = bucket_start_[size_t(nk)]; s < bucket_start_[size_t(nk) + 1]; ++s) {
-                    const size_t j = size_t(bucket_items_[size_t(s)]);
-                    const glm::vec2 d = p - particles_[j].pos_m;
-                    const float d2 = dot(d, d);
-                    if (d2 >= two_r2 || j == i) continue;
-                    const float dist = std::sqrt(d2);
-                    // Coincident centres part along a direction fixed by their order.
-                    glm::vec2 dir = dist > 1e-7f ? d / dist : (i < j ? glm::vec2(1.0f, 0.0f) : glm::vec2(-1.0f, 0.0f));
-                    push_[i] += dir * (0.5f * (two_r - dist) * (1.0f + p_.restitution));
+    auto meet = [&](size_t i, size_t j) {
+        const glm::vec2 d = particles_[i].pos_m - particles_[j].pos_m;
+        const float d2 = dot(d, d);
+        if (d2 >= two_r2) return;
+        const float dist = std::sqrt(d2);
+        // Coincident centres part along a direction fixed by their order.
+        const glm::vec2 dir = dist > 1e-7f ? d / dist : glm::vec2(i < j ? 1.0f : -1.0f, 0.0f);
+        const glm::vec2 push = dir * (0.5f * (two_r - dist) * (1.0f + p_.restitution));
+        push_[i] += push;
+        push_[j] -= push;
+    };
+    constexpr int kAheadI[4] = {1, -1, 0, 1}, kAheadJ[4] = {0, 1, 1, 1};
+    for (int kj = 0; kj < br; ++kj)
+        for (int ki = 0; ki < bc; ++ki) {
+            const int k = kj * bc + ki;
+            const int32_t b0 = bucket_start_[size_t(k)], b1 = bucket_start_[size_t(k) + 1];
+            for (int32_t a = b0; a < b1; ++a) {
+                const size_t i = size_t(bucket_items_[size_t(a)]);
+                for (int32_t b = a + 1; b < b1; ++b) meet(i, size_t(bucket_items_[size_t(b)]));
+                for (int n = 0; n < 4; ++n) {
+                    const int ni = ki + kAheadI[n], nj = kj + kAheadJ[n];
+                    if (ni < 0 || ni >= bc || nj >= br) continue;
+                    const int nk = nj * bc + ni;
+                    for (int32_t b = bucket_start_[size_t(nk)]; b < bucket_start_[size_t(nk) + 1]; ++b)
+                        meet(i, size_t(bucket_items_[size_t(b)]));
                 }
             }
-    }
+        }
     for (size_t i = 0; i < particles_.size(); ++i) particles_[i].pos_m += push_[i];
 }
 

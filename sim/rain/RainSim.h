@@ -26,6 +26,7 @@ struct RainDrop {
     glm::vec2 pos_m{0.0f};    // glass coordinates, inside cell
     glm::vec2 vel_mps{0.0f};
     float mass_mg = 0.0f;
+    float radius_m = 0.0f;    // RainSim::radius_m(mass_mg), kept with the mass
     float travel_m = 0.0f;    // run since the last cell step
     int32_t cell = 0;
     uint32_t flags = 0;       // kTrail, kDead
@@ -33,7 +34,7 @@ struct RainDrop {
     bool trail() const { return flags & kTrail; }
     bool dead() const { return flags & kDead; }
 };
-static_assert(sizeof(RainDrop) == 32, "RainDrop is hashed as raw words");
+static_assert(sizeof(RainDrop) == 36, "RainDrop is hashed as raw words");
 
 struct WaterParticle {
     glm::vec2 pos_m{0.0f};
