@@ -1,5 +1,6 @@
 // The frame, in order. An effect adds its pass here, after what it reads.
 #include "effects/Renderer.h"
+#include "effects/fluid/FluidPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
@@ -16,6 +17,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     passes.push_back(std::make_unique<OpaquePass>());
     passes.push_back(std::make_unique<SceneCopyPass>());
     passes.push_back(std::make_unique<WaterPass>());
+    passes.push_back(std::make_unique<FluidPass>());
     passes.push_back(std::make_unique<TonemapPass>());
     return passes;
 }

@@ -1,5 +1,6 @@
 // The stepping order of the world's subsystems. An effect with a sim part adds its
 // subsystem here, where its inputs (the player, vehicles, objects) are already stepped.
+#include "sim/fluid/FluidTank.h"
 #include "sim/objects/ThrownObjects.h"
 #include "sim/player/CameraRig.h"
 #include "sim/player/Player.h"
@@ -31,6 +32,8 @@ void add_standard_subsystems(World& world) {
         world.set_sea(water.get());
         world.add(std::move(water));
     }
+    if (level.fluid.enabled)  // after the objects and the boat: it reads where they are this tick
+        world.add(std::make_unique<FluidTank>(level.fluid, level.tank_spot, level.seed));
     world.add(std::make_unique<CameraRig>());
 }
 
