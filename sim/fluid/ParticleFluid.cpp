@@ -99,6 +99,7 @@ void ParticleFluid::add_particles(const std::vector<glm::vec3>& positions) {
     lambda_.resize(n);
     counts_.assign(n, uint16_t(p_.body_neighbours));
     neighbours_.resize(n * kMaxNeighbours);
+    pair_.resize(n * kMaxNeighbours);
     cell_of_.resize(n);
     order_.resize(n);
     scratch_.resize(n);
@@ -225,11 +226,15 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
                 float rho = poly6(0.0f, h2_);
                 glm::vec3 grad_i(0.0f);
                 float grad2 = 0.0f;
+                glm::vec4* pair = &pair_[i * kMaxNeighbours];
                 for (int k = 0; k < m; ++k) {
                     glm::vec3 d = pred_[i] - pred_[nb[k]];
                     float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-                    rho += poly6(r2, h2_);
-                    glm::vec3 g = spiky_gradient(d, std::sqrt(r2), h_) * inv_rho0;
+                    float w = poly6(r2, h2_);
+                    rho += w;
+                    glm::vec3 g = spiky_gradient(d, std::sqrt(r2), h_);
+                    pair[k] = glm::vec4(g, w);  // reused by the position step below
+                    g *= inv_rho0;
                     grad_i += g;
                     grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
                 }
@@ -243,13 +248,12 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
             for (size_t i = b; i < e; ++i) {
                 const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
                 const int m = std::min<int>(counts_[i], kMaxNeighbours);
+                const glm::vec4* pair = &pair_[i * kMaxNeighbours];
                 glm::vec3 dp(0.0f);
                 for (int k = 0; k < m; ++k) {
-                    glm::vec3 d = pred_[i] - pred_[nb[k]];
-                    float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-                    float w = poly6(r2, h2_) / scorr_w_;
+                    float w = pair[k].w / scorr_w_;
                     float scorr = -0.001f * w * w * w * w;  // tensile instability term, k = 0.001, n = 4
-                    dp += (lambda_[i] + lambda_[nb[k]] + scorr) * spiky_gradient(d, std::sqrt(r2), h_);
+                    dp += (lambda_[i] + lambda_[nb[k]] + scorr) * glm::vec3(pair[k]);
                 }
                 // With few iterations a deep compression would be undone in one leap and
                 // fling particles: a step moves at most the rest spacing.

@@ -9,6 +9,7 @@
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "sim/core/JobPool.h"
 
@@ -77,6 +78,7 @@ private:
     std::vector<float> lambda_;
     std::vector<uint16_t> counts_;
     std::vector<uint32_t> neighbours_;  // kMaxNeighbours per particle
+    std::vector<glm::vec4> pair_;       // per neighbour: kernel gradient and weight of this iteration
     std::vector<uint32_t> cell_start_;  // cells + 1 prefix sums
     std::vector<uint32_t> cell_of_, order_;
     std::vector<glm::vec3> scratch_;
