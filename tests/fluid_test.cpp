@@ -11,7 +11,14 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
 #include "SimTestLevel.h"
+#include "game/level/LevelError.h"
+#include "game/session/GameSession.h"
 #include "sim/fluid/AnisotropicKernels.h"
 #include "sim/fluid/FluidScenes.h"
 #include "sim/fluid/FluidTank.h"
@@ -259,6 +266,49 @@ TEST(FluidTank, SameWorldHashesForOneAndTwoThreads) {
         return h;
     };
     EXPECT_EQ(run(1), run(2));
+}
+
+// The harbour level with its "fluid" section replaced: bad values are the level's
+// fault, refused with the field named (LevelError: exit 3 from the CLI).
+std::string fluid_level_error(const std::string& fluid_json) {
+    namespace fs = std::filesystem;
+    const fs::path data = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "levels";
+    std::ifstream in(data / "harbour.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string json = text.str();
+    const size_t at = json.find("\"fluid\": {"), end = json.find("}},", at);
+    EXPECT_NE(at, std::string::npos);
+    json.replace(at, end + 2 - at, "\"fluid\": " + fluid_json);
+    const fs::path dir = fs::temp_directory_path() / ("spindrift_fluid_test_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::create_directory_symlink(data / "harbour", dir / "tankless");
+    std::ofstream(dir / "tankless.json") << json;
+    std::string message;
+    try {
+        game::GameSession::open((dir / "tankless.json").string(), 1);
+    } catch (const game::LevelError& e) {
+        message = e.what();
+    }
+    fs::remove_all(dir);
+    return message;
+}
+
+TEST(FluidLevel, BadTankParametersAreRefusedNamingTheField) {
+    auto expect = [](const std::string& fluid, const std::string& words) {
+        const std::string m = fluid_level_error(fluid);
+        EXPECT_NE(m.find(words), std::string::npos) << fluid << " -> '" << m << "'";
+    };
+    expect(R"({"particle_radius_m": 0})", "fluid.particle_radius_m");
+    expect(R"({"smoothing": {"kernel_size": 8}})", "fluid.smoothing.kernel_size: must be odd");
+    expect(R"({"smoothing": {"kernel_size": 17}})", "fluid.smoothing.kernel_size");
+    expect(R"({"smoothing": {"iterations": 0}})", "fluid.smoothing.iterations");
+    expect(R"({"smoothing": {"method": "gaussian"}})", "fluid.smoothing.method");
+    expect(R"({"solver_iterations": 0})", "fluid.solver_iterations");
+    expect(R"({"on": "roof"})", "fluid.on");
+    expect(R"({"particle_count": 100000})", "particle_count 100000 does not fit the tank");
+    EXPECT_EQ(fluid_level_error(R"({"on": "boat", "particle_count": 1500, "tank_size_m": [1.1, 0.7, 1.4]})"), "");
 }
 
 }  // namespace
