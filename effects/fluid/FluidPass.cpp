@@ -64,12 +64,12 @@ void FluidPass::register_params(ParamRegistry& params) {
 void FluidPass::set_smoothing(const FluidSmoothing& smoothing) {
     smoothing.validate();
     smoothing_ = smoothing;
-    smoothing_overridden_ = true;
+    smoothing_set_ = true;
 }
 
 void FluidPass::render(const FrameContext& frame) {
     if (!gather_fluid_view(frame.world, view_)) return;
-    if (!smoothing_overridden_) {
+    if (!smoothing_set_) {  // the level's settings, once: the debug panel may change them after
         const sim::FluidTankDesc& d = frame.world.level().fluid;
         FluidSmoothing s;
         s.method = smoothing_method(d.smoothing);
@@ -77,6 +77,7 @@ void FluidPass::render(const FrameContext& frame) {
         s.iterations = d.smoothing_iterations;
         s.validate();
         smoothing_ = s;
+        smoothing_set_ = true;
     }
     draw(frame, view_);
 }
@@ -85,16 +86,13 @@ void FluidPass::resize_targets(int w, int h) {
     if (w == width_ && h == height_) return;
     width_ = w;
     height_ = h;
-    const char* names[2][3] = {{"fluid.body_front", "fluid.body_back", "fluid.body_thickness"},
-                               {"fluid.splash_front", "fluid.splash_back", "fluid.splash_thickness"}};
+    const char* names[2][2] = {{"fluid.body_front", "fluid.body_back"}, {"fluid.splash_front", "fluid.splash_back"}};
     for (int g = 0; g < 2; ++g) {
         front_[g] = depth_map(names[g][0], w, h);
         back_[g] = depth_map(names[g][1], w, h);
-        thickness_[g] = depth_map(names[g][2], w, h);
         depth_fbo_[g] = gl::Framebuffer::create(g == 0 ? "fluid.body_depths" : "fluid.splash_depths");
         depth_fbo_[g].attach_colour(0, front_[g]);
         depth_fbo_[g].attach_colour(1, back_[g]);
-        depth_fbo_[g].attach_colour(2, thickness_[g]);
         depth_fbo_[g].check_complete();
     }
     front_pp_[0] = depth_map("fluid.smooth_front_a", w, h);
@@ -247,19 +245,17 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
             depth_fbo_[g].bind();
             glClearBufferfv(GL_COLOR, 0, far_front);
             glClearBufferfv(GL_COLOR, 1, zero);
-            glClearBufferfv(GL_COLOR, 2, zero);
             if (group_view.empty()) continue;
             upload(particles_[g], group_view);
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_[g].id());
-            for (GLuint i = 0; i < 3; ++i) {
+            for (GLuint i = 0; i < 2; ++i) {
                 glEnablei(GL_BLEND, i);
                 glBlendFunci(i, GL_ONE, GL_ONE);
             }
             glBlendEquationi(0, GL_MIN);
             glBlendEquationi(1, GL_MAX);
-            glBlendEquationi(2, GL_FUNC_ADD);
             glDrawArrays(GL_POINTS, 0, GLsizei(group_view.size()));
-            for (GLuint i = 0; i < 3; ++i) glDisablei(GL_BLEND, i);
+            for (GLuint i = 0; i < 2; ++i) glDisablei(GL_BLEND, i);
         }
         glDisable(GL_PROGRAM_POINT_SIZE);
         glBlendEquation(GL_FUNC_ADD);

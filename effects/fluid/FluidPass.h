@@ -63,8 +63,8 @@ private:
                               float radius);
 
     gl::Program ellipsoids_, plane_fit_, bilateral_, narrow_range_, normals_, refract_;
-    // [0] body, [1] splash: front, back, thickness and their framebuffer.
-    gl::Texture front_[2], back_[2], thickness_[2];
+    // [0] body, [1] splash: front and back depth maps and their framebuffer.
+    gl::Texture front_[2], back_[2];
     gl::Framebuffer depth_fbo_[2];
     gl::Texture front_pp_[2], back_pp_[2];  // smoothing ping-pong for the body's maps
     gl::Framebuffer smooth_fbo_;
@@ -81,7 +81,7 @@ private:
 
     FluidView view_;  // reused each frame
     FluidSmoothing smoothing_;
-    bool smoothing_overridden_ = false;
+    bool smoothing_set_ = false;  // by the level (first frame) or set_smoothing()
     bool profiling_ = false, probe_ = false;
     FluidStageTimes times_;
     glm::ivec4 rect_{0};

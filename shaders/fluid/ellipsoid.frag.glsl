@@ -1,13 +1,12 @@
 #version 450 core
 #include "fluid/common.glsl"
-// Exact ray-ellipsoid hit: front (MIN blend), back (MAX blend) and thickness (added),
-// each a view distance; hidden behind the opaque scene, nothing.
+// Exact ray-ellipsoid hit: front (MIN blend) and back (MAX blend) view distances;
+// hidden behind the opaque scene, nothing.
 flat in vec3 v_centre;
 flat in mat3 v_to_unit;
 uniform sampler2D u_scene_depth;  // window depth of the scene
 layout(location = 0) out float o_front;
 layout(location = 1) out float o_back;
-layout(location = 2) out float o_thickness;
 
 void main() {
     vec3 ray = view_ray(gl_FragCoord.xy);
@@ -24,5 +23,4 @@ void main() {
     t1 = min(t1, scene_z);
     o_front = t0;
     o_back = t1;
-    o_thickness = (t1 - t0) * length(ray);
 }
