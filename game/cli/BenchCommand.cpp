@@ -9,6 +9,7 @@
 #include "game/bench/BenchReport.h"
 #include "game/bench/EnergyBench.h"
 #include "game/bench/RainBench.h"
+#include "game/bench/FluidBench.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
@@ -124,6 +125,7 @@ int bench_command(const std::vector<std::string>& argv) {
     bench_water(report, quick);
 
     HeadlessContext context;
+    bench_fluid(report, quick);
     std::cerr << "bench: render (" << context.renderer() << ")\n";
     bench_render(report, 640, 360, quick ? 3 : 8);
     bench_render(report, 1280, 720, quick ? 3 : 8);

@@ -16,6 +16,7 @@
 #include "game/level/GltfModel.h"
 #include "game/level/LevelMemory.h"
 #include "sim/core/Hash.h"
+#include "sim/fluid/FluidTank.h"
 
 namespace game {
 
@@ -126,7 +127,7 @@ public:
 
     // Everything in the JSON, checked; assets are only named here, not loaded.
     void parse(sim::LevelDesc& level, uint64_t& budget_mib, std::vector<Placement>& placements) {
-        r_.object(doc_, "", {"format", "id", "seed", "budget_mib", "world", "roads", "sun", "rain", "water", "car", "boat", "tank_spot", "props"});
+        r_.object(doc_, "", {"format", "id", "seed", "budget_mib", "world", "roads", "sun", "rain", "water", "fluid", "car", "boat", "tank_spot", "props"});
         const json& format = r_.required(doc_, "", "format");
         if (!format.is_number_unsigned() || format.get<uint64_t>() != 1)
             r_.fail("format", "unsupported format " + (format.is_primitive() ? format.dump() : std::string(format.type_name())) +
@@ -162,11 +163,13 @@ public:
                 level.rain.cell_size_m = r_.number_in(*cell, "rain.cell_size_m", 0.001f, 0.05f);
         }
         if (const json* water = LevelReader::optional(doc_, "water")) water_grid(*water, level);
+        if (const json* fluid = LevelReader::optional(doc_, "fluid")) fluid_tank(*fluid, level);
         placements.push_back(placement(r_.required(doc_, "", "car"), "car", false));
         placements.push_back(placement(r_.required(doc_, "", "boat"), "boat", false));
         level.car_spawn = {placements[0].position, placements[0].heading_rad};
         level.boat_spawn = {placements[1].position, placements[1].heading_rad};
         level.tank_spot = position(r_.required(doc_, "", "tank_spot"), "tank_spot");
+        for (const sim::Aabb& wall : sim::tank_walls(level.fluid, level.tank_spot)) level.solids.push_back(wall);
         if (const json* props = LevelReader::optional(doc_, "props")) {
             r_.array(*props, "props", kMaxLevelProps);
             for (size_t i = 0; i < props->size(); ++i)
@@ -189,6 +192,61 @@ private:
         g.spacing_m = r_.number_in(r_.required(w, "water", "grid_spacing_m"), "water.grid_spacing_m", 0.01f, 100.0f);
         g.wave_speed_mps = r_.number_in(r_.required(w, "water", "wave_speed_mps"), "water.wave_speed_mps", 0.0f, 100.0f, true);
         g.damping_per_s = r_.number_in(r_.required(w, "water", "damping_per_s"), "water.damping_per_s", 0.0f, 10.0f);
+    }
+
+    int whole_in(const json& v, const std::string& where, int lo, int hi) const {
+        if (!v.is_number_integer() || v.get<int64_t>() < lo || v.get<int64_t>() > hi)
+            r_.fail(where, "expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+        return int(v.get<int64_t>());
+    }
+
+    // "fluid": {"particle_count": 6000, "particle_radius_m": 0.03, "tank_size_m": [1.6, 1.1, 1.6],
+    //           "solver_iterations": 3, "body_neighbours": 12, "on": "pier" | "boat",
+    //           "smoothing": {"method": "plane_fit" | "bilateral" | "narrow_range",
+    //                         "kernel_size": 9 (odd, 3..15), "iterations": 3 (1..64)}}
+    // All keys optional; the sim checks that the particles fit the tank.
+    void fluid_tank(const json& f, sim::LevelDesc& level) {
+        r_.object(f, "fluid", {"particle_count", "particle_radius_m", "tank_size_m", "solver_iterations",
+                               "body_neighbours", "on", "smoothing"});
+        sim::FluidTankDesc& d = level.fluid;
+        d.enabled = true;
+        if (const json* v = LevelReader::optional(f, "particle_count")) d.particle_count = whole_in(*v, "fluid.particle_count", 1, 200000);
+        if (const json* v = LevelReader::optional(f, "particle_radius_m"))
+            d.particle_radius_m = r_.number_in(*v, "fluid.particle_radius_m", 0.0f, 1.0f, true);
+        if (const json* v = LevelReader::optional(f, "tank_size_m")) {
+            d.inner_size_m = r_.vec<3>(*v, "fluid.tank_size_m");
+            for (int a = 0; a < 3; ++a)
+                if (!(d.inner_size_m[a] > 0.0f && d.inner_size_m[a] <= 20.0f))
+                    r_.fail(index_path("fluid.tank_size_m", size_t(a)), "expected a size in (0, 20] m");
+        }
+        if (const json* v = LevelReader::optional(f, "solver_iterations"))
+            d.solver_iterations = whole_in(*v, "fluid.solver_iterations", 1, 20);
+        if (const json* v = LevelReader::optional(f, "body_neighbours")) d.body_neighbours = whole_in(*v, "fluid.body_neighbours", 1, 60);
+        if (const json* v = LevelReader::optional(f, "on")) {
+            std::string on = r_.string(*v, "fluid.on");
+            if (on != "pier" && on != "boat") r_.fail("fluid.on", "expected \"pier\" or \"boat\", got \"" + on + "\"");
+            d.on_boat = on == "boat";
+        }
+        if (const json* sm = LevelReader::optional(f, "smoothing")) {
+            r_.object(*sm, "fluid.smoothing", {"method", "kernel_size", "iterations"});
+            if (const json* v = LevelReader::optional(*sm, "method")) {
+                d.smoothing = r_.string(*v, "fluid.smoothing.method");
+                if (d.smoothing != "plane_fit" && d.smoothing != "bilateral" && d.smoothing != "narrow_range")
+                    r_.fail("fluid.smoothing.method",
+                            "expected \"plane_fit\", \"bilateral\" or \"narrow_range\", got \"" + d.smoothing + "\"");
+                // Each method's own defaults (seed: plane fitting 9x9 x3, bilateral 7x7 x22).
+                if (d.smoothing == "bilateral") {
+                    d.kernel_size = 7;
+                    d.smoothing_iterations = 22;
+                }
+            }
+            if (const json* v = LevelReader::optional(*sm, "kernel_size")) {
+                d.kernel_size = whole_in(*v, "fluid.smoothing.kernel_size", 3, 15);
+                if (d.kernel_size % 2 == 0) r_.fail("fluid.smoothing.kernel_size", "must be odd, got " + std::to_string(d.kernel_size));
+            }
+            if (const json* v = LevelReader::optional(*sm, "iterations"))
+                d.smoothing_iterations = whole_in(*v, "fluid.smoothing.iterations", 1, 64);
+        }
     }
 
     void world(const json& w, sim::LevelDesc& level) {

@@ -24,6 +24,16 @@
 //     "car":  {"asset": "car.gltf",  "position": [x, y, z], "heading_deg": 0},    required
 //     "boat": {"asset": "boat.gltf", "position": [x, y, z], "heading_deg": -90},  required
 //     "tank_spot": [22, 1.5, 36],        required: where the fluid tank stands
+//     "fluid": {                         optional: the glass tank of liquid (specs/fluid.md)
+//       "particle_count": 3000,          1..200000, must fit the tank at the rest spacing
+//       "particle_radius_m": 0.04,       (0, 1]
+//       "tank_size_m": [1.6, 1.1, 1.6],  inner size, each (0, 20]
+//       "solver_iterations": 3,          1..20
+//       "body_neighbours": 12,           fewer neighbours: splash; 1..60
+//       "on": "pier",                    "pier" (at tank_spot, its panes are solids) | "boat"
+//       "smoothing": {"method": "plane_fit", "kernel_size": 9, "iterations": 3}
+//     },                                   method plane_fit | bilateral | narrow_range;
+//                                          kernel odd 3..15; iterations 1..64
 //     "props": [                         optional, at most 4096
 //       {"asset": "warehouse.gltf", "position": [x, y, z],
 //        "heading_deg": 0,               optional (default 0)

@@ -54,6 +54,21 @@ struct RainDesc {
     std::vector<glm::vec3> glass_lower, glass_upper;  // empty: the car has no windshield
 };
 
+// The glass tank of particle liquid (specs/fluid.md). The smoothing fields are read
+// by the renderer (effects/fluid), not the sim; the loader checks them.
+struct FluidTankDesc {
+    bool enabled = false;
+    bool on_boat = false;                  // rides the boat's deck instead of the pier
+    glm::vec3 inner_size_m{1.6f, 1.1f, 1.6f};  // filled from the floor up at the rest spacing
+    float particle_radius_m = 0.04f;
+    int particle_count = 3000;             // a tick within 6 ms on 2 threads (spindrift bench)
+    int solver_iterations = 3;
+    int body_neighbours = 12;              // fewer neighbours than this: splash
+    std::string smoothing = "plane_fit";   // "plane_fit" | "bilateral" | "narrow_range"
+    int kernel_size = 9;                   // odd, pixels
+    int smoothing_iterations = 3;
+};
+
 struct LevelDesc {
     std::string id;
     uint64_t seed = 1;
@@ -80,6 +95,7 @@ struct LevelDesc {
     float rain_intensity = 0.0f;                // 0..1 at start
     RainDesc rain;
     WaterGridDesc water;
+    FluidTankDesc fluid;
 };
 
 }  // namespace sim

@@ -1,5 +1,6 @@
 // The stepping order of the world's subsystems. An effect with a sim part adds its
 // subsystem here, where its inputs (the player, vehicles, objects) are already stepped.
+#include "sim/fluid/FluidTank.h"
 #include "sim/objects/ThrownObjects.h"
 #include "sim/player/CameraRig.h"
 #include "sim/player/Player.h"
@@ -38,6 +39,8 @@ void add_standard_subsystems(World& world) {
         params.cell_size_m = level.rain.cell_size_m;
         world.add(std::make_unique<RainSim>(params, level.rain.glass_lower, level.rain.glass_upper, level.seed));
     }
+    if (level.fluid.enabled)  // after the objects and the boat: it reads where they are this tick
+        world.add(std::make_unique<FluidTank>(level.fluid, level.tank_spot, level.seed));
     world.add(std::make_unique<CameraRig>());
 }
 

@@ -1,0 +1,336 @@
+#include "effects/fluid/FluidPass.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "effects/gl/DebugGroup.h"
+#include "effects/gl/EmptyVertexArray.h"
+
+namespace effects {
+
+namespace {
+
+// The std430 layout of shaders/fluid/ellipsoid.vert.glsl's particles.
+struct GpuEllipsoid {
+    glm::vec4 centre, axis0, axis1, axis2;
+};
+
+using Clock = std::chrono::steady_clock;
+
+constexpr GLuint kSceneDepthUnit = 0, kMapUnit = 1;
+
+gl::Texture depth_map(const char* label, int w, int h) {
+    gl::Texture t = gl::Texture::create_2d(label, GL_R32F, w, h);
+    t.set_filter(GL_NEAREST, GL_NEAREST);
+    t.set_wrap(GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+void set_ivec4(const gl::Program& p, std::string_view name, glm::ivec4 v) {
+    glProgramUniform4i(p.id(), p.location(name), v.x, v.y, v.z, v.w);
+}
+
+// Milliseconds since `t` after the GPU is done, and restarts `t` (profiling only).
+double lap(Clock::time_point& t) {
+    glFinish();
+    auto now = Clock::now();
+    double ms = std::chrono::duration<double, std::milli>(now - t).count();
+    t = now;
+    return ms;
+}
+
+}  // namespace
+
+FluidPass::FluidPass()
+    : ellipsoids_(gl::Program::from_files("fluid.ellipsoids", {"fluid/ellipsoid.vert.glsl", "fluid/ellipsoid.frag.glsl"})),
+      plane_fit_(gl::Program::from_files("fluid.plane_fit", {"fluid/screen.vert.glsl", "fluid/plane_fit.frag.glsl"})),
+      bilateral_(gl::Program::from_files("fluid.bilateral", {"fluid/screen.vert.glsl", "fluid/bilateral.frag.glsl"})),
+      narrow_range_(
+          gl::Program::from_files("fluid.narrow_range", {"fluid/screen.vert.glsl", "fluid/narrow_range.frag.glsl"})),
+      normals_(gl::Program::from_files("fluid.normals", {"fluid/screen.vert.glsl", "fluid/normals.frag.glsl"})),
+      refract_(gl::Program::from_files("fluid.refract", {"fluid/screen.vert.glsl", "fluid/refract.frag.glsl"})) {}
+
+void FluidPass::register_params(ParamRegistry& params) {
+    params.add("fluid", "absorption per m", &look_.absorption_per_m, 0.0f, 10.0f);
+    params.add("fluid", "index of refraction", &look_.ior, 1.0f, 2.0f);
+    params.add("fluid", "plane sigma (radii)", &look_.plane_sigma_radii, 0.5f, 10.0f);
+    params.add("fluid", "plane max move (radii)", &look_.plane_max_move_radii, 0.5f, 10.0f);
+    params.add("fluid", "smoothing iterations", &smoothing_.iterations, 1, 64);
+}
+
+void FluidPass::set_smoothing(const FluidSmoothing& smoothing) {
+    smoothing.validate();
+    smoothing_ = smoothing;
+    smoothing_set_ = true;
+}
+
+void FluidPass::render(const FrameContext& frame) {
+    if (!gather_fluid_view(frame.world, view_)) return;
+    if (!smoothing_set_) {  // the level's settings, once: the debug panel may change them after
+        const sim::FluidTankDesc& d = frame.world.level().fluid;
+        FluidSmoothing s;
+        s.method = smoothing_method(d.smoothing);
+        s.kernel_size = d.kernel_size;
+        s.iterations = d.smoothing_iterations;
+        s.validate();
+        smoothing_ = s;
+        smoothing_set_ = true;
+    }
+    draw(frame, view_);
+}
+
+void FluidPass::resize_targets(int w, int h) {
+    if (w == width_ && h == height_) return;
+    width_ = w;
+    height_ = h;
+    const char* names[2][2] = {{"fluid.body_front", "fluid.body_back"}, {"fluid.splash_front", "fluid.splash_back"}};
+    for (int g = 0; g < 2; ++g) {
+        front_[g] = depth_map(names[g][0], w, h);
+        back_[g] = depth_map(names[g][1], w, h);
+        depth_fbo_[g] = gl::Framebuffer::create(g == 0 ? "fluid.body_depths" : "fluid.splash_depths");
+        depth_fbo_[g].attach_colour(0, front_[g]);
+        depth_fbo_[g].attach_colour(1, back_[g]);
+        depth_fbo_[g].check_complete();
+    }
+    front_pp_[0] = depth_map("fluid.smooth_front_a", w, h);
+    front_pp_[1] = depth_map("fluid.smooth_front_b", w, h);
+    back_pp_[0] = depth_map("fluid.smooth_back_a", w, h);
+    back_pp_[1] = depth_map("fluid.smooth_back_b", w, h);
+    smooth_fbo_ = gl::Framebuffer::create("fluid.smooth");
+    const char* normal_names[4] = {"fluid.body_front_normal", "fluid.body_back_normal", "fluid.splash_front_normal",
+                                   "fluid.splash_back_normal"};
+    for (int k = 0; k < 4; ++k) {
+        normal_[k] = gl::Texture::create_2d(normal_names[k], GL_RGBA16F, w, h);
+        normal_[k].set_filter(GL_NEAREST, GL_NEAREST);
+    }
+    for (int g = 0; g < 2; ++g) {
+        normal_fbo_[g] = gl::Framebuffer::create(g == 0 ? "fluid.body_normals" : "fluid.splash_normals");
+        normal_fbo_[g].attach_colour(0, normal_[2 * g]);
+        normal_fbo_[g].attach_colour(1, normal_[2 * g + 1]);
+        normal_fbo_[g].check_complete();
+    }
+    background_ = gl::Texture::create_2d("fluid.background", GL_RGBA16F, w, h);
+    background_.set_filter(GL_NEAREST, GL_NEAREST);
+    shade_colour_id_ = 0;
+    smoothed_front_ = &front_[0];
+}
+
+glm::ivec4 FluidPass::screen_rect(const FrameContext& frame, const FluidView& view, int margin) const {
+    // World bounds of the glass box (up to twice its height, where splashes fly) and
+    // of every ellipsoid.
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    if (view.tank_size != glm::vec3(0.0f))
+        for (int k = 0; k < 8; ++k) {
+            glm::vec3 c((k & 1) ? view.tank_size.x : 0.0f, (k & 2) ? 2.0f * view.tank_size.y : 0.0f,
+                        (k & 4) ? view.tank_size.z : 0.0f);
+            glm::vec3 w(view.tank_to_world * glm::vec4(c, 1.0f));
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+        }
+    for (const auto* group : {&view.body, &view.splash})
+        for (const sim::FluidEllipsoid& e : *group) {
+            float r = std::max({glm::length(e.axis[0]), glm::length(e.axis[1]), glm::length(e.axis[2])});
+            lo = glm::min(lo, e.centre - r);
+            hi = glm::max(hi, e.centre + r);
+        }
+    const int w = width_, h = height_;
+    if (lo.x > hi.x) return glm::ivec4(0);
+    glm::vec2 pmin(1e30f), pmax(-1e30f);
+    for (int k = 0; k < 8; ++k) {
+        glm::vec3 c((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+        glm::vec4 clip = frame.camera.view_proj * glm::vec4(c, 1.0f);
+        if (clip.w < frame.camera.near_m) return {0, 0, w, h};  // reaches behind the eye: all of it
+        glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(float(w), float(h));
+        pmin = glm::min(pmin, px);
+        pmax = glm::max(pmax, px);
+    }
+    glm::ivec4 r(int(std::floor(pmin.x)) - margin, int(std::floor(pmin.y)) - margin, int(std::ceil(pmax.x)) + margin,
+                 int(std::ceil(pmax.y)) + margin);
+    r = glm::clamp(r, glm::ivec4(0), glm::ivec4(w, h, w, h));
+    if (r.z <= r.x || r.w <= r.y) return glm::ivec4(0);
+    return r;
+}
+
+void FluidPass::upload(gl::Buffer& buffer, const std::vector<sim::FluidEllipsoid>& ellipsoids) {
+    if (ellipsoids.empty()) return;
+    std::vector<GpuEllipsoid> gpu(ellipsoids.size());
+    for (size_t i = 0; i < ellipsoids.size(); ++i) {
+        const sim::FluidEllipsoid& e = ellipsoids[i];
+        gpu[i] = {glm::vec4(e.centre, 1.0f), glm::vec4(e.axis[0], 0.0f), glm::vec4(e.axis[1], 0.0f),
+                  glm::vec4(e.axis[2], 0.0f)};
+    }
+    const GLsizeiptr bytes = GLsizeiptr(gpu.size() * sizeof(GpuEllipsoid));
+    if (buffer.size() < bytes)
+        buffer = gl::Buffer::create<GpuEllipsoid>(&buffer == &particles_[0] ? "fluid.body_particles" : "fluid.splash_particles",
+                                                  std::span<const GpuEllipsoid>(gpu));
+    else
+        buffer.update<GpuEllipsoid>(0, std::span<const GpuEllipsoid>(gpu));
+}
+
+const gl::Texture* FluidPass::smooth(const gl::Texture& source, gl::Texture* ping_pong, const FrameContext& frame,
+                                     float radius) {
+    const gl::Program* p = &plane_fit_;
+    if (smoothing_.method == SmoothingMethod::Bilateral) p = &bilateral_;
+    if (smoothing_.method == SmoothingMethod::NarrowRange) p = &narrow_range_;
+    p->use();
+    set_ivec4(*p, "u_rect", rect_);
+    p->set("u_proj", frame.camera.proj);
+    p->set("u_viewport", glm::vec2(float(width_), float(height_)));
+    p->set("u_depth", int(kMapUnit));
+    p->set("u_half", (smoothing_.kernel_size - 1) / 2);
+    p->set("u_sigma", look_.plane_sigma_radii * radius);
+    p->set("u_max_move", look_.plane_max_move_radii * radius);
+    // The seed's bilateral parameters: sigma_1 = w / (2 sqrt 2), sigma_2 = 2 sqrt 2 r.
+    p->set("u_sigma_space", float(smoothing_.kernel_size) / (2.0f * std::sqrt(2.0f)));
+    p->set("u_sigma_depth", 2.0f * std::sqrt(2.0f) * radius);
+    p->set("u_band", look_.narrow_band_radii * radius);
+    const gl::Texture* in = &source;
+    for (int it = 0; it < smoothing_.iterations; ++it) {
+        gl::Texture* out = &ping_pong[it % 2];
+        smooth_fbo_.attach_colour(0, *out);
+        smooth_fbo_.bind();
+        in->bind(kMapUnit);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        in = out;
+    }
+    return in;
+}
+
+void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
+    const SceneTargets& t = frame.scene.targets;
+    const Camera& cam = frame.camera;
+    resize_targets(t.width(), t.height());
+    rect_ = screen_rect(frame, view, (FluidSmoothing::kMaxKernel - 1) / 2 + 2);
+    times_ = {};
+    if (rect_.z <= rect_.x || view.empty()) {
+        rect_ = glm::ivec4(0);
+        return;
+    }
+    auto clock = Clock::now();
+    if (profiling_) lap(clock);
+    const glm::vec2 viewport{float(width_), float(height_)};
+    const float radius = view.particle_radius_m;
+
+    // The scene so far (water included), around the rectangle: what refracted rays see.
+    const glm::ivec2 grow = (glm::ivec2(rect_.z - rect_.x, rect_.w - rect_.y)) / 2;
+    const glm::ivec4 bg = glm::clamp(glm::ivec4(rect_.x - grow.x, rect_.y - grow.y, rect_.z + grow.x, rect_.w + grow.y),
+                                     glm::ivec4(0), glm::ivec4(width_, height_, width_, height_));
+    glCopyImageSubData(t.colour().id(), GL_TEXTURE_2D, 0, bg.x, bg.y, 0, background_.id(), GL_TEXTURE_2D, 0, bg.x, bg.y,
+                       0, bg.z - bg.x, bg.w - bg.y, 1);
+
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect_.x, rect_.y, rect_.z - rect_.x, rect_.w - rect_.y);
+    glViewport(0, 0, width_, height_);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    gl::bind_empty_vertex_array();
+
+    {
+        gl::DebugGroup group("fluid.depth_maps");
+        glEnable(GL_PROGRAM_POINT_SIZE);
+        ellipsoids_.use();
+        set_ivec4(ellipsoids_, "u_rect", rect_);
+        ellipsoids_.set("u_proj", cam.proj);
+        ellipsoids_.set("u_view", cam.view);
+        ellipsoids_.set("u_viewport", viewport);
+        ellipsoids_.set("u_scene_depth", int(kSceneDepthUnit));
+        t.depth().bind(kSceneDepthUnit);
+        const float far_front[4] = {1.0e6f, 0, 0, 0}, zero[4] = {0, 0, 0, 0};
+        for (int g = 0; g < 2; ++g) {
+            const auto& group_view = g == 0 ? view.body : view.splash;
+            depth_fbo_[g].bind();
+            glClearBufferfv(GL_COLOR, 0, far_front);
+            glClearBufferfv(GL_COLOR, 1, zero);
+            if (group_view.empty()) continue;
+            upload(particles_[g], group_view);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_[g].id());
+            for (GLuint i = 0; i < 2; ++i) {
+                glEnablei(GL_BLEND, i);
+                glBlendFunci(i, GL_ONE, GL_ONE);
+            }
+            glBlendEquationi(0, GL_MIN);
+            glBlendEquationi(1, GL_MAX);
+            glDrawArrays(GL_POINTS, 0, GLsizei(group_view.size()));
+            for (GLuint i = 0; i < 2; ++i) glDisablei(GL_BLEND, i);
+        }
+        glDisable(GL_PROGRAM_POINT_SIZE);
+        glBlendEquation(GL_FUNC_ADD);
+    }
+    if (profiling_) times_.depth_ms = lap(clock);
+
+    {
+        // The body only: splash drops stay round.
+        gl::DebugGroup group("fluid.smoothing");
+        smoothed_front_ = smooth(front_[0], front_pp_, frame, radius);
+        smoothed_back_ = smooth(back_[0], back_pp_, frame, radius);
+    }
+    if (profiling_) times_.smoothing_ms = lap(clock);
+
+    {
+        gl::DebugGroup group("fluid.normals");
+        normals_.use();
+        set_ivec4(normals_, "u_rect", rect_);
+        normals_.set("u_proj", cam.proj);
+        normals_.set("u_viewport", viewport);
+        normals_.set("u_front", 1);
+        normals_.set("u_back", 2);
+        for (int g = 0; g < 2; ++g) {
+            normal_fbo_[g].bind();
+            (g == 0 ? *smoothed_front_ : front_[1]).bind(1);
+            (g == 0 ? *smoothed_back_ : back_[1]).bind(2);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+    }
+    if (profiling_) times_.normals_ms = lap(clock);
+
+    {
+        gl::DebugGroup group("fluid.refraction");
+        if (shade_colour_id_ != t.colour().id()) {
+            shade_fbo_ = gl::Framebuffer::create("fluid.shade");
+            shade_fbo_.attach_colour(0, t.colour());
+            shade_fbo_.check_complete();
+            shade_colour_id_ = t.colour().id();
+        }
+        shade_fbo_.bind();
+        const gl::Program& p = refract_;
+        frame.scene.lighting.apply_sky(p);
+        p.use();
+        set_ivec4(p, "u_rect", rect_);
+        p.set("u_proj", cam.proj);
+        p.set("u_viewport", viewport);
+        set_ivec4(p, "u_background_rect", bg);
+        p.set("u_view_to_world", glm::mat3(glm::inverse(cam.view)));
+        p.set("u_view_to_tank", glm::inverse(cam.view * view.tank_to_world));
+        p.set("u_tank_size", view.tank_size);
+        p.set("u_absorption", look_.absorption_per_m * look_.absorption_colour);
+        p.set("u_ior", look_.ior);
+        p.set("u_epsilon", 0.25f * radius);
+        p.set("u_frame_width", 0.025f);
+        p.set("u_probe", probe_ ? 1 : 0);
+        const gl::Texture* maps[8] = {smoothed_front_, smoothed_back_, &front_[1], &back_[1],
+                                      &normal_[0],     &normal_[1],    &normal_[2], &normal_[3]};
+        const char* names[8] = {"u_body_front",        "u_body_back",        "u_splash_front",
+                                "u_splash_back",       "u_body_front_normal", "u_body_back_normal",
+                                "u_splash_front_normal", "u_splash_back_normal"};
+        for (int k = 0; k < 8; ++k) {
+            maps[k]->bind(GLuint(1 + k));
+            p.set(names[k], 1 + k);
+        }
+        background_.bind(9);
+        p.set("u_background", 9);
+        t.depth().bind(10);
+        p.set("u_scene_depth", 10);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    if (profiling_) times_.refraction_ms = lap(clock);
+
+    glDisable(GL_SCISSOR_TEST);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace effects

@@ -1,0 +1,131 @@
+#include "sim/fluid/AnisotropicKernels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace sim {
+
+void symmetric_eigen(const float m[3][3], float values[3], glm::vec3 vectors[3]) {
+    double a[3][3], v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) a[i][j] = double(m[i][j]);
+    for (int sweep = 0; sweep < 12; ++sweep) {
+        double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+        double scale = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+        if (off <= 1e-24 * scale || off == 0.0) break;
+        for (int p = 0; p < 2; ++p)
+            for (int q = p + 1; q < 3; ++q) {
+                if (a[p][q] == 0.0) continue;
+                double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+                double t = (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
+                double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
+                for (int k = 0; k < 3; ++k) {  // A <- A J
+                    double akp = a[k][p], akq = a[k][q];
+                    a[k][p] = c * akp - s * akq;
+                    a[k][q] = s * akp + c * akq;
+                }
+                for (int k = 0; k < 3; ++k) {  // A <- J^T A
+                    double apk = a[p][k], aqk = a[q][k];
+                    a[p][k] = c * apk - s * aqk;
+                    a[q][k] = s * apk + c * aqk;
+                }
+                for (int k = 0; k < 3; ++k) {
+                    double vkp = v[k][p], vkq = v[k][q];
+                    v[k][p] = c * vkp - s * vkq;
+                    v[k][q] = s * vkp + c * vkq;
+                }
+            }
+    }
+    int idx[3] = {0, 1, 2};
+    std::sort(idx, idx + 3, [&](int x, int y) { return a[x][x] > a[y][y]; });
+    for (int k = 0; k < 3; ++k) {
+        values[k] = float(a[idx[k]][idx[k]]);
+        vectors[k] = glm::vec3(float(v[0][idx[k]]), float(v[1][idx[k]]), float(v[2][idx[k]]));
+    }
+}
+
+void anisotropic_kernels(const std::vector<glm::vec3>& positions, const AnisotropyParams& p,
+                         std::vector<FluidEllipsoid>& out) {
+    const size_t n = positions.size();
+    out.resize(n);
+    if (n == 0) return;
+    const float r = p.neighbourhood_m, r2 = r * r, rp = p.particle_radius_m;
+    // A uniform grid of cell r / 2 over the particles' bounds, counting-sorted: the 5^3
+    // cells around a particle cover less empty space than 3^3 cells of r.
+    const float cell_m = 0.5f * r;
+    glm::vec3 lo = positions[0], hi = positions[0];
+    for (const glm::vec3& q : positions) {
+        lo = glm::min(lo, q);
+        hi = glm::max(hi, q);
+    }
+    glm::ivec3 cells = glm::max(glm::ivec3((hi - lo) / cell_m) + 1, glm::ivec3(1));
+    const size_t ncell = size_t(cells.x) * size_t(cells.y) * size_t(cells.z);
+    std::vector<uint32_t> start(ncell + 1, 0), cell(n), sorted(n);
+    auto cell_of = [&](glm::vec3 q) { return glm::clamp(glm::ivec3((q - lo) / cell_m), glm::ivec3(0), cells - 1); };
+    for (size_t i = 0; i < n; ++i) {
+        glm::ivec3 c = cell_of(positions[i]);
+        cell[i] = uint32_t((size_t(c.z) * size_t(cells.y) + size_t(c.y)) * size_t(cells.x) + size_t(c.x));
+        ++start[cell[i] + 1];
+    }
+    for (size_t c = 1; c <= ncell; ++c) start[c] += start[c - 1];
+    {
+        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        for (size_t i = 0; i < n; ++i) sorted[fill[cell[i]]++] = uint32_t(i);
+    }
+
+    for (size_t i = 0; i < n; ++i) {
+        const glm::vec3 x = positions[i];
+        const glm::ivec3 c = cell_of(x);
+        // Weighted mean first (relative to x, for precision), then the covariance.
+        glm::vec3 mean(0.0f);
+        float wsum = 0.0f;
+        int count = 0;
+        auto each = [&](auto&& fn) {
+            for (int z = std::max(c.z - 2, 0); z <= std::min(c.z + 2, cells.z - 1); ++z)
+                for (int y = std::max(c.y - 2, 0); y <= std::min(c.y + 2, cells.y - 1); ++y) {
+                    size_t row = (size_t(z) * size_t(cells.y) + size_t(y)) * size_t(cells.x);
+                    uint32_t first = start[row + size_t(std::max(c.x - 2, 0))];
+                    uint32_t last = start[row + size_t(std::min(c.x + 2, cells.x - 1)) + 1];
+                    for (uint32_t k = first; k < last; ++k) {
+                        glm::vec3 d = positions[sorted[k]] - x;
+                        float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+                        if (d2 >= r2) continue;
+                        float q = std::sqrt(d2) / r;
+                        fn(d, 1.0f - q * q * q, sorted[k] != i);
+                    }
+                }
+        };
+        each([&](glm::vec3 d, float w, bool other) {
+            mean += w * d;
+            wsum += w;
+            count += other ? 1 : 0;
+        });
+        mean /= wsum;  // the particle itself is always in its neighbourhood, weight 1
+        FluidEllipsoid& e = out[i];
+        e.centre = x + p.centre_smoothing * mean;
+        if (count < p.full_neighbours) {
+            e.axis[0] = {rp, 0.0f, 0.0f};
+            e.axis[1] = {0.0f, rp, 0.0f};
+            e.axis[2] = {0.0f, 0.0f, rp};
+            continue;
+        }
+        float cov[3][3] = {};
+        each([&](glm::vec3 d, float w, bool) {
+            glm::vec3 u = d - mean;
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) cov[a][b] += w * u[a] * u[b];
+        });
+        for (auto& row : cov)
+            for (float& v : row) v /= wsum;
+        float sigma[3];
+        glm::vec3 axes[3];
+        symmetric_eigen(cov, sigma, axes);
+        const float floor = std::max(sigma[0], 1e-12f) / p.max_stretch;
+        for (float& s : sigma) s = std::max(s, floor);
+        const float norm = rp / std::cbrt(sigma[0] * sigma[1] * sigma[2]);
+        for (int k = 0; k < 3; ++k) e.axis[k] = axes[k] * (sigma[k] * norm);
+    }
+}
+
+}  // namespace sim

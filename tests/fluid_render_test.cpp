@@ -1,0 +1,200 @@
+// The fluid pass on a real headless context: the tank on a small level, seen through
+// (refracted, tinted), its work confined to the tank's rectangle, a stone's splash
+// drawn as its own layer, and bad smoothing settings refused. Set
+// SPINDRIFT_FLUID_PNG_DIR to write the frames as PNGs.
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "SimTestLevel.h"
+#include "effects/fluid/FluidPass.h"
+#include "effects/gl/Framebuffer.h"
+#include "effects/gl/Texture.h"
+#include "effects/scene/EnvironmentPass.h"
+#include "effects/scene/OpaquePass.h"
+#include "effects/scene/SceneCopyPass.h"
+#include "effects/scene/ShadowPass.h"
+#include "effects/scene/TonemapPass.h"
+#include "effects/water/WaterPass.h"
+#include "game/capture/ImageFiles.h"
+#include "game/capture/Readback.h"
+#include "game/platform/HeadlessContext.h"
+#include "sim/fluid/FluidTank.h"
+#include "sim/objects/ThrownObjects.h"
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 240;
+
+sim::LevelDesc tank_level() {
+    sim::LevelDesc l = make_test_level();
+    l.tank_spot = {24.0f, 1.0f, 30.0f};
+    l.fluid.enabled = true;
+    l.fluid.particle_count = 4000;
+    l.fluid.particle_radius_m = 0.03f;
+    l.fluid.inner_size_m = {1.4f, 1.0f, 1.4f};
+    return l;
+}
+
+sim::CameraView tank_view() {
+    sim::CameraView v;
+    v.eye = {24.5f, 2.6f, 26.5f};
+    v.target = {24.0f, 1.35f, 30.0f};
+    v.fov_y_deg = 45.0f;
+    return v;
+}
+
+struct Stage {
+    Stage()
+        : world(tank_level()),
+          scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 1024),
+                effects::SceneTargets{}},
+          camera(effects::make_camera(tank_view(), float(kWidth) / float(kHeight))) {
+        scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
+        scene.targets.resize(kWidth, kHeight);
+        ldr = effects::gl::Texture::create_2d("test.ldr", GL_RGBA8, kWidth, kHeight);
+        output = effects::gl::Framebuffer::create("test.output");
+        output.attach_colour(0, ldr);
+        output.check_complete();
+    }
+
+    game::ImageRGBA8 render(bool with_fluid) {
+        effects::FrameContext frame{world, camera, scene, {output.id(), kWidth, kHeight}, 0.0};
+        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy, &water})
+            p->render(frame);
+        if (with_fluid) fluid.render(frame);
+        tonemap.render(frame);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        return game::read_framebuffer_rgba8(output.id(), kWidth, kHeight);
+    }
+
+    sim::World world;
+    effects::SceneDesc desc;
+    effects::SceneResources scene;
+    effects::Camera camera;
+    effects::EnvironmentPass environment;
+    effects::ShadowPass shadow;
+    effects::OpaquePass opaque;
+    effects::SceneCopyPass copy;
+    effects::WaterPass water;
+    effects::FluidPass fluid;
+    effects::TonemapPass tonemap;
+    effects::gl::Texture ldr;
+    effects::gl::Framebuffer output;
+};
+
+void maybe_write_png(const std::string& name, const game::ImageRGBA8& img) {
+    if (const char* dir = std::getenv("SPINDRIFT_FLUID_PNG_DIR"))
+        game::write_png(std::filesystem::path(dir) / (name + ".png"), img);
+}
+
+glm::vec3 pixel(const game::ImageRGBA8& img, int x, int y) {
+    const uint8_t* p = &img.pixels[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
+    return {float(p[0]), float(p[1]), float(p[2])};
+}
+
+class FluidRenderTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
+    static void TearDownTestSuite() { context_.reset(); }
+    void SetUp() override {
+        context_->make_current();
+        stage_ = std::make_unique<Stage>();
+        for (int t = 0; t < 45; ++t) stage_->world.step({});  // settled
+    }
+    void TearDown() override { stage_.reset(); }
+
+    static std::unique_ptr<game::HeadlessContext> context_;
+    std::unique_ptr<Stage> stage_;
+};
+
+std::unique_ptr<game::HeadlessContext> FluidRenderTest::context_;
+
+TEST_F(FluidRenderTest, TheTankRefractsAndTintsOnlyInsideItsRectangle) {
+    const game::ImageRGBA8 without = stage_->render(false);
+    const game::ImageRGBA8 with = stage_->render(true);
+    maybe_write_png("tank_without", without);
+    maybe_write_png("tank_with", with);
+    const glm::ivec4 r = stage_->fluid.last_rect();
+    ASSERT_GT(r.z - r.x, 20);
+    ASSERT_GT(r.w - r.y, 20);
+    // The rectangle is a part of the screen, not all of it.
+    EXPECT_LT(double(r.z - r.x) * double(r.w - r.y), 0.6 * kWidth * kHeight);
+    int outside_changed = 0, inside_changed = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const int gl_y = kHeight - 1 - y;  // image rows are top-down
+            const bool inside = x >= r.x && x < r.z && gl_y >= r.y && gl_y < r.w;
+            const bool changed = glm::length(pixel(without, x, y) - pixel(with, x, y)) > 6.0f;
+            (inside ? inside_changed : outside_changed) += changed ? 1 : 0;
+        }
+    EXPECT_EQ(outside_changed, 0);
+    EXPECT_GT(inside_changed, 1500);
+
+    // Beer-Lambert: with the liquid's absorption, red (absorbed most) falls against
+    // green and blue where the liquid is, compared with a clear liquid.
+    const float absorption = stage_->fluid.look().absorption_per_m;
+    stage_->fluid.look().absorption_per_m = 0.0f;
+    const game::ImageRGBA8 clear = stage_->render(true);
+    stage_->fluid.look().absorption_per_m = absorption;
+    maybe_write_png("tank_clear", clear);
+    glm::vec3 tinted_sum(0.0f), clear_sum(0.0f);
+    int liquid = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (glm::length(pixel(clear, x, y) - pixel(with, x, y)) > 6.0f) {
+                tinted_sum += pixel(with, x, y);
+                clear_sum += pixel(clear, x, y);
+                ++liquid;
+            }
+    ASSERT_GT(liquid, 500);
+    const glm::vec3 tinted = tinted_sum / float(liquid), see_through = clear_sum / float(liquid);
+    EXPECT_LT(tinted.x / (tinted.y + tinted.z), 0.9f * see_through.x / (see_through.y + see_through.z));
+    EXPECT_GT(tinted.y + tinted.z, 60.0f);  // not black
+}
+
+TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
+    stage_->world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.2f, 30.0f}, {0, 0, 1}, {0, 0, 0});
+    // Until the drops are up (at most a second).
+    for (int t = 0; t < 60 && stage_->world.get<sim::FluidTank>().fluid().splash_count() < 25; ++t) stage_->world.step({});
+    effects::FluidView view;
+    ASSERT_TRUE(effects::gather_fluid_view(stage_->world, view));
+    ASSERT_GE(view.splash.size(), 25u);
+    const game::ImageRGBA8 splash = stage_->render(true);
+    maybe_write_png("tank_splash", splash);
+    // Without the splash layer, those pixels show what is behind the drops.
+    const glm::ivec4 r = stage_->fluid.last_rect();
+    int drop_pixels = 0;
+    for (const sim::FluidEllipsoid& e : view.splash) {
+        glm::vec4 c = stage_->camera.view_proj * glm::vec4(e.centre, 1.0f);
+        glm::vec2 px = (glm::vec2(c) / c.w * 0.5f + 0.5f) * glm::vec2(kWidth, kHeight);
+        drop_pixels += (px.x >= r.x && px.x < r.z && px.y >= r.y && px.y < r.w) ? 1 : 0;
+    }
+    EXPECT_GT(drop_pixels, 10);  // the rectangle grew to hold the flying drops
+}
+
+TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
+    effects::FluidSmoothing s;
+    s.kernel_size = 8;
+    EXPECT_THROW(stage_->fluid.set_smoothing(s), std::invalid_argument);
+    s.kernel_size = 17;
+    EXPECT_THROW(stage_->fluid.set_smoothing(s), std::invalid_argument);
+    s.kernel_size = 9;
+    s.iterations = 0;
+    EXPECT_THROW(stage_->fluid.set_smoothing(s), std::invalid_argument);
+    EXPECT_THROW(effects::smoothing_method("gaussian"), std::invalid_argument);
+    for (auto m : {effects::SmoothingMethod::PlaneFit, effects::SmoothingMethod::Bilateral,
+                   effects::SmoothingMethod::NarrowRange}) {
+        EXPECT_EQ(effects::smoothing_method(effects::smoothing_name(m)), m);
+        stage_->fluid.set_smoothing(effects::FluidSmoothing::defaults(m));
+        const game::ImageRGBA8 img = stage_->render(true);
+        maybe_write_png("tank_" + std::string(effects::smoothing_name(m)), img);
+    }
+}
+
+}  // namespace
