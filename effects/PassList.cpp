@@ -1,5 +1,6 @@
 // The frame, in order. An effect adds its pass here, after what it reads.
 #include "effects/Renderer.h"
+#include "effects/dust/DustPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
@@ -14,6 +15,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     passes.push_back(std::make_unique<EnvironmentPass>());
     passes.push_back(std::make_unique<ShadowPass>());
     passes.push_back(std::make_unique<OpaquePass>());
+    passes.push_back(std::make_unique<DustPass>());  // shells over the opaque dusty props
     passes.push_back(std::make_unique<SceneCopyPass>());
     passes.push_back(std::make_unique<WaterPass>());
     passes.push_back(std::make_unique<TonemapPass>());

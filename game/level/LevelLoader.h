@@ -21,11 +21,19 @@
 //     "car":  {"asset": "car.gltf",  "position": [x, y, z], "heading_deg": 0},    required
 //     "boat": {"asset": "boat.gltf", "position": [x, y, z], "heading_deg": -90},  required
 //     "tank_spot": [22, 1.5, 36],        required: where the fluid tank stands
+//     "dust": {                          optional: dusty props (specs/dust.md)
+//       "fibre_image": "dust_fibres.png",   required: a binarised fibre image among the assets
+//       "fibre_slices": 3,               slices stacked in the image, 1..16 (default 1)
+//       "preset": "dust",                dust | sand | mould (default dust)
+//       "sources_per_prop": 5, "source_elevation_deg": 65, "source_distance": 2.5,
+//       "sample_spacing_m": 0.08, "object_clear_radius_m": 0.25, "shot_clear_radius_m": 0.6
+//     },
 //     "props": [                         optional, at most 4096
 //       {"asset": "warehouse.gltf", "position": [x, y, z],
 //        "heading_deg": 0,               optional (default 0)
 //        "scale": 1,                     optional (default 1), (0, 1000]
-//        "collision": "solid"}           optional: "solid" | "deck" | "none" (default)
+//        "collision": "solid",           optional: "solid" | "deck" | "none" (default)
+//        "dust": true}                   optional: true (the dust preset) or a preset name
 //     ]
 //   }
 //

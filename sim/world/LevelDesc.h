@@ -8,6 +8,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "sim/dust/DustDesc.h"
+
 namespace sim {
 
 struct Aabb {
@@ -71,6 +73,7 @@ struct LevelDesc {
     glm::vec3 sun_direction{0.4f, 0.8f, 0.3f};  // towards the sun, normalised by the loader
     float rain_intensity = 0.0f;                // 0..1 at start
     WaterGridDesc water;
+    DustDesc dust;  // the dusty props (specs/dust.md)
 };
 
 }  // namespace sim
