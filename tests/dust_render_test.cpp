@@ -6,8 +6,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
+#include <unistd.h>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -31,8 +34,8 @@ constexpr int kWidth = 320, kHeight = 200;
 
 // The harbour with its passes up to the dust, and a camera of the test's choosing.
 struct DustStage {
-    DustStage()
-        : session(game::GameSession::open("harbour", 1)),
+    explicit DustStage(const std::string& level = "harbour")
+        : session(game::GameSession::open(level, 1)),
           scene{session.level.scene, effects::SceneGeometry(session.level.scene, session.world->terrain()),
                 effects::SceneLighting(32, 1024), effects::SceneTargets{}} {
         scene.lighting.sky.sun_dir = glm::normalize(session.world->level().sun_direction);
@@ -54,7 +57,7 @@ struct DustStage {
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
         return game::read_framebuffer_rgba8(output.id(), kWidth, kHeight);
     }
-    glm::ivec2 pixel_of(const sim::CameraView& view, glm::vec3 p) const {
+    static glm::ivec2 pixel_of(const sim::CameraView& view, glm::vec3 p) {
         effects::Camera camera = effects::make_camera(view, float(kWidth) / float(kHeight));
         glm::vec4 c = camera.view_proj * glm::vec4(p, 1.0f);
         glm::vec2 ndc = glm::vec2(c) / c.w;
@@ -187,4 +190,43 @@ TEST_F(DustRenderTest, UnderTheShelfBoardsThereIsLittleDust) {
     EXPECT_LT(middle, 0.6f * top);
     // The top board is covered on screen; the dust changed it.
     EXPECT_GT(stats(dusty, &bare, stage.pixel_of(v, {-40.0f, 2.88f, -49.12f}), 2).changed, 0.5);
+}
+
+TEST_F(DustRenderTest, SandAndMouldPresetsComeFromTheSameMachinery) {
+    // The harbour with its crates under sand and the small crate under mould.
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("spindrift_dust_presets_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path data = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "levels";
+    std::ifstream in(data / "harbour.json");
+    std::string json{std::istreambuf_iterator<char>(in), {}};
+    auto swap = [&](const std::string& from, const std::string& to) {
+        for (size_t at = json.find(from); at != std::string::npos; at = json.find(from, at + to.size())) json.replace(at, from.size(), to);
+    };
+    swap("\"crate_large.gltf\", \"dust\": true", "\"crate_large.gltf\", \"dust\": \"sand\"");
+    swap("\"crate_small.gltf\", \"dust\": true", "\"crate_small.gltf\", \"dust\": \"mould\"");
+    std::ofstream(dir / "presets.json") << json;
+    fs::create_directory_symlink(data / "harbour", dir / "presets");
+    game::ImageRGBA8 dust, sand;
+    {
+        DustStage stage;
+        dust = stage.render(crate_view(), true);
+    }
+    {
+        DustStage stage((dir / "presets.json").string());
+        sand = stage.render(crate_view(), true);
+        save(sand, "crates_sand_mould.png");
+        EXPECT_EQ(stage.field().surface().props()[0].kind, sim::DustKind::Sand);
+        // Sand slides off anything steeper than its angle of repose: the crate sides
+        // hold none even where dust would lie thinly.
+        const auto& s = stage.field().surface();
+        for (uint32_t v = 0; v < s.props()[0].vertex_count; v += 7) {
+            if (s.normals()[s.props()[0].first_vertex + v].y < 0.7f) {
+                EXPECT_EQ(stage.field().amounts()[s.props()[0].first_vertex + v], 0.0f);
+            }
+        }
+    }
+    fs::remove_all(dir);
+    const glm::ivec2 at = DustStage::pixel_of(crate_view(), {-49.1f, 2.43f, -46.3f});
+    EXPECT_GT(stats(sand, &dust, at, 8).changed, 0.5) << "sand looks unlike dust";
 }

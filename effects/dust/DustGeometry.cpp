@@ -17,6 +17,8 @@ void DustGeometry::upload_static(const sim::DustField& field) {
         packed.insert(packed.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
     }
     vertices_ = gl::Buffer::create<float>("dust.vertices", packed, 0);
+    vertex_light_ = gl::Buffer::create("dust.vertex_light",
+                                       GLsizeiptr(std::max<size_t>(s.positions().size(), 1) * 2 * sizeof(float) * 4));
     amounts_ = gl::Buffer::create("dust.amounts", GLsizeiptr(std::max<size_t>(s.positions().size(), 1) * sizeof(float)));
     shell_vao_ = gl::VertexArray::create("dust.shells");
     shell_vao_.attribute(0, 0, 3, GL_FLOAT, 0);
@@ -29,6 +31,7 @@ void DustGeometry::upload_static(const sim::DustField& field) {
     fin_vao_.attribute(1, 0, 3, GL_FLOAT, offsetof(FinVertex, normal));
     fin_vao_.attribute(2, 0, 1, GL_FLOAT, offsetof(FinVertex, amount));
     fin_vao_.attribute(3, 0, 2, GL_FLOAT, offsetof(FinVertex, along_m));
+    fin_vao_.attribute_integer(4, 0, 1, GL_UNSIGNED_INT, offsetof(FinVertex, vertex));
 }
 
 void DustGeometry::rebuild(const sim::DustField& field) {
@@ -64,7 +67,7 @@ void DustGeometry::rebuild(const sim::DustField& field) {
                 glm::vec3 p = s.positions()[w], n = s.normals()[w];
                 // Along-edge coordinate offset by where the edge lies, so fins differ.
                 float along = (w == u ? 0.0f : len) + glm::dot(pu, glm::vec3(0.37f, 0.11f, 0.61f));
-                scratch_fins_.push_back({{p.x, p.y, p.z}, {n.x, n.y, n.z}, amount[w], along, k < 2 ? 0.0f : 1.0f});
+                scratch_fins_.push_back({{p.x, p.y, p.z}, {n.x, n.y, n.z}, amount[w], along, k < 2 ? 0.0f : 1.0f, w});
             }
             scratch_fin_indices_.insert(scratch_fin_indices_.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
         }

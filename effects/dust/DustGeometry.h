@@ -26,6 +26,8 @@ public:
     // Uploads what changed since the last call; cheap when nothing did.
     void update(const sim::DustField& field);
 
+    const gl::Buffer& vertices() const { return vertices_; }  // position, normal per vertex
+    const gl::Buffer& vertex_light() const { return vertex_light_; }  // two vec4 per vertex
     const gl::VertexArray& shells() const { return shell_vao_; }
     const gl::VertexArray& fins() const { return fin_vao_; }
     const std::vector<DustDrawRange>& ranges() const { return ranges_; }  // per sim prop
@@ -39,6 +41,7 @@ private:
         float amount;
         float along_m;  // distance along the edge
         float height;   // 0 at the base, 1 at the top
+        uint32_t vertex; // the dusty vertex it stands on (for its light)
     };
 
     void upload_static(const sim::DustField& field);
@@ -46,7 +49,7 @@ private:
 
     const sim::DustField* field_ = nullptr;
     uint64_t revision_ = ~0ull;
-    gl::Buffer vertices_, amounts_, shell_indices_, fin_vertices_, fin_indices_;
+    gl::Buffer vertices_, vertex_light_, amounts_, shell_indices_, fin_vertices_, fin_indices_;
     gl::VertexArray shell_vao_, fin_vao_;
     std::vector<DustDrawRange> ranges_;
     std::vector<uint32_t> scratch_indices_, scratch_fin_indices_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -11,10 +12,25 @@ namespace effects {
 
 namespace {
 constexpr GLuint kFibreUnit = 0, kLuminanceUnit = 1;
+
+// Whether a box can be seen: not all of its corners beyond one clip plane.
+bool in_view(const glm::mat4& view_proj, glm::vec3 lo, glm::vec3 hi) {
+    glm::vec4 c[8];
+    for (int k = 0; k < 8; ++k)
+        c[k] = view_proj * glm::vec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z, 1.0f);
+    for (int axis = 0; axis < 3; ++axis)
+        for (float side : {-1.0f, 1.0f}) {
+            bool all_out = true;
+            for (const glm::vec4& v : c) all_out = all_out && side * v[axis] > v.w;
+            if (all_out) return false;
+        }
+    return true;
 }
+}  // namespace
 
 DustPass::DustPass()
-    : shell_(gl::Program::from_files("dust.shell", {"dust/shell.vert.glsl", "dust/shell.frag.glsl"})),
+    : light_(gl::Program::from_files("dust.light", {"dust/light.comp.glsl"})),
+      shell_(gl::Program::from_files("dust.shell", {"dust/shell.vert.glsl", "dust/shell.frag.glsl"})),
       fin_(gl::Program::from_files("dust.fin", {"dust/fin.vert.glsl", "dust/shell.frag.glsl"})) {}
 
 void DustPass::register_params(ParamRegistry& params) {
@@ -60,19 +76,36 @@ void DustPass::render(const FrameContext& frame) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(-1.0f, -2.0f);
 
+    // The props in view, lit once per vertex.
+    const auto& props = field->surface().props();
+    std::vector<bool> visible(props.size());
+    frame.scene.lighting.apply(light_);
+    light_.set("u_eye", cam.eye);
+    light_.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, geometry_.vertices().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, geometry_.vertex_light().id());
+    for (size_t i = 0; i < props.size(); ++i) {
+        const float pad = dust_look(props[i].kind).height_m;
+        visible[i] = geometry_.ranges()[i].shell_index_count > 0 &&
+                     in_view(cam.view_proj, props[i].bounds.min - pad, props[i].bounds.max + pad);
+        if (!visible[i]) continue;
+        light_.set("u_first", props[i].first_vertex);
+        light_.set("u_count", props[i].vertex_count);
+        glDispatchCompute((props[i].vertex_count + 63) / 64, 1, 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
     for (const gl::Program* p : {&shell_, &fin_}) {
-        frame.scene.lighting.apply(*p);
         p->set("u_view_proj", cam.view_proj);
         p->set("u_eye", cam.eye);
         p->set("u_fibres", int(kFibreUnit));
         p->set("u_luminance", int(kLuminanceUnit));
         p->set("u_threshold", kFibreThreshold);
     }
-    const auto& props = field->surface().props();
     for (size_t i = 0; i < props.size(); ++i) {
+        if (!visible[i]) continue;
         const sim::DustPropRange& prop = props[i];
         const DustDrawRange& r = geometry_.ranges()[i];
-        if (r.shell_index_count == 0) continue;
         const DustLook look = dust_look(prop.kind);
         const FibreTexture& fibres = fibres_for(prop.kind, frame.scene.desc.fibre_directions);
         fibres.bind(kFibreUnit, kLuminanceUnit);

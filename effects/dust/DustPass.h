@@ -18,7 +18,7 @@
 namespace effects {
 
 struct DustLod {
-    int max_shells = 16;        // up close: more shells than fibre layers, so none shows
+    int max_shells = 12;        // up close: more shells than fibre layers, so none shows
     int min_shells = 3;         // far away
     float full_detail_m = 3.0f; // closer than this: max_shells; beyond, falling as 1/distance
     float fin_distance_m = 14.0f; // props farther away get no fins
@@ -40,7 +40,7 @@ public:
 private:
     const FibreTexture& fibres_for(sim::DustKind kind, const FibreDirections& directions);
 
-    gl::Program shell_, fin_;
+    gl::Program light_, shell_, fin_;
     DustGeometry geometry_;
     std::array<std::unique_ptr<FibreTexture>, sim::kDustKindCount> fibres_;
     DustLod lod_;

@@ -7,6 +7,7 @@
 
 #include "effects/Renderer.h"
 #include "game/bench/BenchReport.h"
+#include "game/bench/DustBench.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
@@ -120,11 +121,15 @@ int bench_command(const std::vector<std::string>& argv) {
     bench_replay_check(report, quick ? 300 : 1800);
     std::cerr << "bench: water\n";
     bench_water(report, quick);
+    std::cerr << "bench: dust\n";
+    bench_dust_cpu(report, quick);
 
     HeadlessContext context;
     std::cerr << "bench: render (" << context.renderer() << ")\n";
     bench_render(report, 640, 360, quick ? 3 : 8);
     bench_render(report, 1280, 720, quick ? 3 : 8);
+    bench_dust_render(report, 640, 360, quick);
+    bench_dust_render(report, 1280, 720, quick);
     report.add({"memory", "peak resident after 1280x720 frames", peak_resident_mib(), "MiB", 1024.0});
 
     report.print_table();

@@ -1,14 +1,14 @@
 #version 450 core
 // Shell i of u_shells (instance 0 is the film on the surface itself): the dusty
 // surface pushed out along its normal by i/u_shells of the dust height at this
-// vertex's amount. Lit per vertex: the tessellation is finer than the light changes.
-#include "common/sky.glsl"
-#include "common/lighting.glsl"
-#include "dust/vertex_light.glsl"
+// vertex's amount. Lit per vertex (dust/light.comp.glsl): the tessellation is finer
+// than the light changes.
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in float a_amount;
+
+layout(std430, binding = 1) readonly buffer VertexLight { vec4 vertex_light[]; };  // light, fog
 
 uniform mat4 u_view_proj;
 uniform float u_height_m;
@@ -33,6 +33,7 @@ void main() {
     v_height = h;
     v_fin_uv = vec2(0.0);
     v_fin_fade = 1.0;
-    light_vertex(p, n, v_light, v_fog);
+    v_light = vertex_light[2 * gl_VertexID].rgb;
+    v_fog = vertex_light[2 * gl_VertexID + 1];
     gl_Position = u_view_proj * vec4(p, 1.0);
 }

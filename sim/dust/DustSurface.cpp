@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
+#include <unordered_map>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -15,8 +15,16 @@ namespace {
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Vertices of neighbouring triangles land on the same point up to rounding: merge
-// them on a 0.1 mm grid (and normals on a 1e-3 grid), in a deterministic map.
+// them on a 0.1 mm grid (and normals on a 1e-3 grid). The map is only looked up,
+// never iterated: vertex numbers follow first use, whatever the hash.
 using VertexKey = std::array<int32_t, 6>;
+struct VertexKeyHash {
+    size_t operator()(const VertexKey& k) const {
+        uint64_t h = 0x9e3779b97f4a7c15ull;
+        for (int32_t v : k) h = (h ^ uint32_t(v)) * 0x100000001b3ull;
+        return size_t(h ^ (h >> 29));
+    }
+};
 VertexKey key_of(glm::vec3 p, glm::vec3 n) {
     auto q = [](float v, float step) { return int32_t(std::lround(v / step)); };
     return {q(p.x, 1e-4f), q(p.y, 1e-4f), q(p.z, 1e-4f), q(n.x, 1e-3f), q(n.y, 1e-3f), q(n.z, 1e-3f)};
@@ -47,7 +55,7 @@ DustSurface::DustSurface(const std::vector<DustyPropDesc>& props, float spacing_
         range.kind = prop.kind;
         range.first_vertex = uint32_t(positions_.size());
         range.first_index = uint32_t(indices_.size());
-        std::map<VertexKey, uint32_t> merged;
+        std::unordered_map<VertexKey, uint32_t, VertexKeyHash> merged;
         auto vertex = [&](glm::vec3 p, glm::vec3 n) {
             auto [it, added] = merged.try_emplace(key_of(p, n), uint32_t(positions_.size()));
             if (added) {
