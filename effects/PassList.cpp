@@ -4,6 +4,7 @@
 #include "effects/energy/EnergyPass.h"
 #include "effects/rain/RainPass.h"
 #include "effects/fluid/FluidPass.h"
+#include "effects/dust/DustPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
@@ -19,6 +20,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     passes.push_back(std::make_unique<ShadowPass>());
     passes.push_back(std::make_unique<EnergyLightPass>());  // before anything is lit
     passes.push_back(std::make_unique<OpaquePass>());
+    passes.push_back(std::make_unique<DustPass>());  // shells over the opaque dusty props
     passes.push_back(std::make_unique<SceneCopyPass>());
     passes.push_back(std::make_unique<WaterPass>());
     passes.push_back(std::make_unique<FluidPass>());

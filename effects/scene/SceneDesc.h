@@ -9,6 +9,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "effects/dust/FibreDirections.h"
+
 namespace effects {
 
 struct MeshVertex {
@@ -41,6 +43,7 @@ struct SceneDesc {
     std::vector<PropInstance> props;  // static level geometry
     int car_model = -1;               // drawn at the sim's car pose
     int boat_model = -1;              // drawn at the sim's boat pose
+    FibreDirections fibre_directions; // from the level's dust fibre image (empty: no dust)
 };
 
 }  // namespace effects

@@ -10,6 +10,7 @@
 #include "game/bench/EnergyBench.h"
 #include "game/bench/RainBench.h"
 #include "game/bench/FluidBench.h"
+#include "game/bench/DustBench.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
@@ -123,6 +124,8 @@ int bench_command(const std::vector<std::string>& argv) {
     bench_replay_check(report, quick ? 300 : 1800);
     std::cerr << "bench: water\n";
     bench_water(report, quick);
+    std::cerr << "bench: dust\n";
+    bench_dust_cpu(report, quick);
 
     HeadlessContext context;
     bench_fluid(report, quick);
@@ -133,6 +136,8 @@ int bench_command(const std::vector<std::string>& argv) {
     bench_energy(report, quick);
     std::cerr << "bench: rain\n";
     bench_rain(report, quick);
+    bench_dust_render(report, 640, 360, quick);
+    bench_dust_render(report, 1280, 720, quick);
     report.add({"memory", "peak resident after 1280x720 frames", peak_resident_mib(), "MiB", 1024.0});
 
     report.print_table();

@@ -40,6 +40,10 @@ commands:
   bench  [--json FILE] [--quick]
          Time the sim per subsystem, the replay check and each render pass at 1280x720
          and 640x360; prints a table and writes JSON.
+  fibres IMAGE [--slices N] [--layers OUT.png]  |  fibres --draw OUT.png [--slices N]
+         Dust fibre statistics (seed 004): the 26-direction growth table of a binarised
+         fibre image (black fibres on white; N slices stacked vertically, one per
+         layer), optionally the shell layers grown from it; --draw makes an example.
 
 options:
   --level    a level name from levels/ (e.g. harbour) or a path to a level .json
@@ -92,6 +96,7 @@ int run_cli(int argc, char** argv) {
         if (command == "record") return record_command(rest);
         if (command == "replay") return replay_command(rest);
         if (command == "bench") return bench_command(rest);
+        if (command == "fibres") return fibres_command(rest);
         throw UsageError("unknown command '" + command + "'");
     } catch (const UsageError& e) {
         std::cerr << "error: " << e.what() << "\n(spindrift --help lists the commands and options)\n";

@@ -5,14 +5,17 @@
 #include <cmath>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 #include <nlohmann/json.hpp>
 
 #include "game/DataPaths.h"
+#include "game/dust/FibreImage.h"
 #include "game/level/GltfModel.h"
 #include "game/level/LevelMemory.h"
 #include "sim/core/Hash.h"
@@ -53,6 +56,16 @@ struct Placement {  // a car, boat or prop entry, read but not yet loaded
     float heading_rad = 0.0f;
     float scale = 1.0f;
     Collision collision = Collision::none;
+    bool dusty = false;
+    std::optional<sim::DustKind> dust_kind;  // unset: the level's dust preset
+};
+
+// The level's "dust" section as read, before the fibre image is loaded.
+struct DustSection {
+    bool present = false;
+    sim::DustKind preset = sim::DustKind::Dust;
+    std::string fibre_image;
+    int fibre_slices = 1;
 };
 
 // Typed access to the level JSON; every error names the file and the JSON path.
@@ -126,8 +139,8 @@ public:
     LevelParser(const fs::path& file, const json& doc) : r_(file), doc_(doc) {}
 
     // Everything in the JSON, checked; assets are only named here, not loaded.
-    void parse(sim::LevelDesc& level, uint64_t& budget_mib, std::vector<Placement>& placements) {
-        r_.object(doc_, "", {"format", "id", "seed", "budget_mib", "world", "roads", "sun", "rain", "water", "fluid", "car", "boat", "tank_spot", "props"});
+    void parse(sim::LevelDesc& level, uint64_t& budget_mib, std::vector<Placement>& placements, DustSection& dust) {
+        r_.object(doc_, "", {"format", "id", "seed", "budget_mib", "world", "roads", "sun", "rain", "water", "fluid", "dust", "car", "boat", "tank_spot", "props"});
         const json& format = r_.required(doc_, "", "format");
         if (!format.is_number_unsigned() || format.get<uint64_t>() != 1)
             r_.fail("format", "unsupported format " + (format.is_primitive() ? format.dump() : std::string(format.type_name())) +
@@ -164,6 +177,7 @@ public:
         }
         if (const json* water = LevelReader::optional(doc_, "water")) water_grid(*water, level);
         if (const json* fluid = LevelReader::optional(doc_, "fluid")) fluid_tank(*fluid, level);
+        if (const json* d = LevelReader::optional(doc_, "dust")) dust_section(*d, level, dust);
         placements.push_back(placement(r_.required(doc_, "", "car"), "car", false));
         placements.push_back(placement(r_.required(doc_, "", "boat"), "boat", false));
         level.car_spawn = {placements[0].position, placements[0].heading_rad};
@@ -178,6 +192,48 @@ public:
     }
 
 private:
+    sim::DustKind dust_kind(const json& v, const std::string& where) {
+        std::string name = r_.string(v, where);
+        sim::DustKind kind;
+        if (!sim::parse_dust_kind(name, kind)) r_.fail(where, "'" + name + "' is not one of dust, sand, mould");
+        return kind;
+    }
+
+    // "dust": {"preset": "dust", "fibre_image": "dust_fibres.png", "fibre_slices": 3,
+    //          "sources_per_prop": 5, "source_elevation_deg": 65, "source_distance": 2.5,
+    //          "sample_spacing_m": 0.08, "object_clear_radius_m": 0.25, "shot_clear_radius_m": 0.6}
+    // Props with "dust": true (the preset) or a preset name are dusty.
+    void dust_section(const json& d, sim::LevelDesc& level, DustSection& out) {
+        r_.object(d, "dust", {"preset", "fibre_image", "fibre_slices", "sources_per_prop", "source_elevation_deg",
+                              "source_distance", "sample_spacing_m", "object_clear_radius_m", "shot_clear_radius_m"});
+        out.present = true;
+        sim::DustDesc& g = level.dust;
+        if (const json* p = LevelReader::optional(d, "preset")) out.preset = dust_kind(*p, "dust.preset");
+        out.fibre_image = r_.string(r_.required(d, "dust", "fibre_image"), "dust.fibre_image");
+        fs::path image(out.fibre_image);
+        bool escapes = std::any_of(image.begin(), image.end(), [](const fs::path& part) { return part == ".."; });
+        if (out.fibre_image.empty() || image.is_absolute() || escapes)
+            r_.fail("dust.fibre_image", "'" + out.fibre_image + "' must be a relative path inside the level's folder, without '..'");
+        if (const json* n = LevelReader::optional(d, "fibre_slices")) {
+            if (!n->is_number_integer() || n->get<int64_t>() < 1 || n->get<int64_t>() > kMaxFibreSlices)
+                r_.fail("dust.fibre_slices", "expected a whole number from 1 to " + std::to_string(kMaxFibreSlices));
+            out.fibre_slices = int(n->get<int64_t>());
+        }
+        if (const json* n = LevelReader::optional(d, "sources_per_prop")) {
+            if (!n->is_number_integer() || n->get<int64_t>() < 1 || n->get<int64_t>() > 16)
+                r_.fail("dust.sources_per_prop", "expected a whole number from 1 to 16");
+            g.sources_per_prop = int(n->get<int64_t>());
+        }
+        auto num = [&](const char* key, float& v, float lo, float hi, bool lo_open) {
+            if (const json* n = LevelReader::optional(d, key)) v = r_.number_in(*n, key_path("dust", key), lo, hi, lo_open);
+        };
+        num("source_elevation_deg", g.source_elevation_deg, 0.0f, 90.0f, false);
+        num("source_distance", g.source_distance, 1.2f, 100.0f, false);
+        num("sample_spacing_m", g.sample_spacing_m, 0.01f, 10.0f, false);
+        num("object_clear_radius_m", g.object_clear_radius_m, 0.0f, 10.0f, false);
+        num("shot_clear_radius_m", g.shot_clear_radius_m, 0.0f, 10.0f, false);
+    }
+
     // "water": {"grid_origin_xz": [x, z], "grid_size": 256, "grid_spacing_m": 0.5,
     //           "wave_speed_mps": 2.5, "damping_per_s": 0.25}; the sim checks stability.
     void water_grid(const json& w, sim::LevelDesc& level) {
@@ -294,7 +350,7 @@ private:
     }
 
     Placement placement(const json& v, const std::string& where, bool is_prop) {
-        if (is_prop) r_.object(v, where, {"asset", "position", "heading_deg", "scale", "collision"});
+        if (is_prop) r_.object(v, where, {"asset", "position", "heading_deg", "scale", "collision", "dust"});
         else r_.object(v, where, {"asset", "position", "heading_deg"});
         Placement p;
         p.where = where;
@@ -316,6 +372,11 @@ private:
             if (mode == "solid") p.collision = Collision::solid;
             else if (mode == "deck") p.collision = Collision::deck;
             else if (mode != "none") r_.fail(where + ".collision", "'" + mode + "' is not one of solid, deck, none");
+        }
+        if (const json* d = LevelReader::optional(v, "dust")) {
+            if (d->is_boolean()) p.dusty = d->get<bool>();
+            else if (d->is_string()) p.dusty = true, p.dust_kind = dust_kind(*d, where + ".dust");
+            else r_.fail(where + ".dust", "expected true, false or a preset name (dust, sand, mould)");
         }
         return p;
     }
@@ -374,6 +435,26 @@ void windshield_edges(const effects::Model& car, const std::string& where, const
     if (rain.glass_lower.size() < 2) r.fail(where, "the windshield mesh must span at least two points across the car");
 }
 
+// A dusty prop's triangles in world space: every mesh of its model, placed.
+sim::DustyPropDesc dusty_prop(const effects::Model& model, const glm::mat4& transform, std::string name,
+                              sim::DustKind kind) {
+    sim::DustyPropDesc d;
+    d.name = std::move(name);
+    d.kind = kind;
+    const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(transform)));
+    for (const effects::MeshData& mesh : model.meshes) {
+        const auto base = uint32_t(d.positions.size());
+        for (const effects::MeshVertex& v : mesh.vertices) {
+            d.positions.push_back(glm::vec3(transform * glm::vec4(v.position, 1.0f)));
+            glm::vec3 n = normal_matrix * v.normal;
+            float len = glm::length(n);
+            d.normals.push_back(len > 1e-8f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f));
+        }
+        for (uint32_t i : mesh.indices) d.indices.push_back(base + i);
+    }
+    return d;
+}
+
 }  // namespace
 
 fs::path resolve_level_path(std::string_view name_or_path) {
@@ -410,7 +491,8 @@ LoadedLevel load_level_text(const fs::path& path, const std::string& text) {
 
     std::vector<Placement> placements;  // car, boat, then props
     uint64_t budget_mib = kDefaultLevelBudgetMib;
-    LevelParser(out.path, doc).parse(out.sim, budget_mib, placements);
+    DustSection dust;
+    LevelParser(out.path, doc).parse(out.sim, budget_mib, placements, dust);
     LevelReader r(out.path);
     // Everything the level states is charged before the world or any asset is made.
     out.memory = MemoryBudget(out.path.string(), budget_mib * kMiB);
@@ -474,9 +556,24 @@ LoadedLevel load_level_text(const fs::path& path, const std::string& text) {
                 have_deck = true;
             }
         }
+        if (p.dusty) {
+            if (!dust.present) r.fail(p.where + ".dust", "the prop is dusty but the level has no \"dust\" section");
+            out.sim.dust.props.push_back(dusty_prop(out.scene.models[size_t(model)], transform,
+                                                    fs::path(p.asset).stem().string() + " (" + p.where + ")",
+                                                    p.dust_kind.value_or(dust.preset)));
+        }
         if (p.collision == Collision::deck) {
             if (!have_deck) r.fail(p.where + ".collision", "'deck' but " + p.asset + " has no meshes besides piling*/nocollide*");
             out.sim.decks.push_back(deck);
+        }
+    }
+    if (dust.present) {
+        out.sim.dust.enabled = true;
+        fs::path image = asset_dir / dust.fibre_image;
+        try {
+            out.scene.fibre_directions = fibre_directions(read_fibre_image(image, dust.fibre_slices), image.string());
+        } catch (const FibreImageError& e) {
+            r.fail("dust.fibre_image", e.what());
         }
     }
     return out;

@@ -34,11 +34,19 @@
 //       "smoothing": {"method": "plane_fit", "kernel_size": 9, "iterations": 3}
 //     },                                   method plane_fit | bilateral | narrow_range;
 //                                          kernel odd 3..15; iterations 1..64
+//     "dust": {                          optional: dusty props (specs/dust.md)
+//       "fibre_image": "dust_fibres.png",   required: a binarised fibre image among the assets
+//       "fibre_slices": 3,               slices stacked in the image, 1..16 (default 1)
+//       "preset": "dust",                dust | sand | mould (default dust)
+//       "sources_per_prop": 5, "source_elevation_deg": 65, "source_distance": 2.5,
+//       "sample_spacing_m": 0.08, "object_clear_radius_m": 0.25, "shot_clear_radius_m": 0.6
+//     },
 //     "props": [                         optional, at most 4096
 //       {"asset": "warehouse.gltf", "position": [x, y, z],
 //        "heading_deg": 0,               optional (default 0)
 //        "scale": 1,                     optional (default 1), (0, 1000]
-//        "collision": "solid"}           optional: "solid" | "deck" | "none" (default)
+//        "collision": "solid",           optional: "solid" | "deck" | "none" (default)
+//        "dust": true}                   optional: true (the dust preset) or a preset name
 //     ]
 //   }
 //

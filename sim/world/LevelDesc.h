@@ -8,6 +8,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "sim/dust/DustDesc.h"
+
 namespace sim {
 
 struct Aabb {
@@ -96,6 +98,7 @@ struct LevelDesc {
     RainDesc rain;
     WaterGridDesc water;
     FluidTankDesc fluid;
+    DustDesc dust;  // the dusty props (specs/dust.md)
 };
 
 }  // namespace sim

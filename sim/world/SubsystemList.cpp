@@ -1,6 +1,7 @@
 // The stepping order of the world's subsystems. An effect with a sim part adds its
 // subsystem here, where its inputs (the player, vehicles, objects) are already stepped.
 #include "sim/fluid/FluidTank.h"
+#include "sim/dust/DustField.h"
 #include "sim/objects/ThrownObjects.h"
 #include "sim/player/CameraRig.h"
 #include "sim/player/Player.h"
@@ -20,6 +21,8 @@ void add_standard_subsystems(World& world) {
     world.add(std::make_unique<Boat>(level.boat_spawn));
     world.add(std::make_unique<Weapon>(level.seed));
     world.add(std::make_unique<ThrownObjects>());
+    // After the weapon and the objects: their shots and flights this tick clear dust.
+    if (level.dust.enabled) world.add(std::make_unique<DustField>(level.dust));
     if (level.water.enabled) {
         // After the objects (it reacts to their water entries this tick); boats and
         // floats ride it from the next tick on.

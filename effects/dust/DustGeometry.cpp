@@ -1,0 +1,107 @@
+#include "effects/dust/DustGeometry.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+namespace effects {
+
+void DustGeometry::upload_static(const sim::DustField& field) {
+    const sim::DustSurface& s = field.surface();
+    std::vector<float> packed;
+    packed.reserve(s.positions().size() * 6);
+    for (size_t v = 0; v < s.positions().size(); ++v) {
+        glm::vec3 p = s.positions()[v], n = s.normals()[v];
+        packed.insert(packed.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+    }
+    vertices_ = gl::Buffer::create<float>("dust.vertices", packed, 0);
+    vertex_light_ = gl::Buffer::create("dust.vertex_light",
+                                       GLsizeiptr(std::max<size_t>(s.positions().size(), 1) * 2 * sizeof(float) * 4));
+    amounts_ = gl::Buffer::create("dust.amounts", GLsizeiptr(std::max<size_t>(s.positions().size(), 1) * sizeof(float)));
+    shell_vao_ = gl::VertexArray::create("dust.shells");
+    shell_vao_.attribute(0, 0, 3, GL_FLOAT, 0);
+    shell_vao_.attribute(1, 0, 3, GL_FLOAT, 3 * sizeof(float));
+    shell_vao_.attribute(2, 1, 1, GL_FLOAT, 0);
+    shell_vao_.vertex_buffer(0, vertices_, 0, 6 * sizeof(float));
+    shell_vao_.vertex_buffer(1, amounts_, 0, sizeof(float));
+    fin_vao_ = gl::VertexArray::create("dust.fins");
+    fin_vao_.attribute(0, 0, 3, GL_FLOAT, offsetof(FinVertex, position));
+    fin_vao_.attribute(1, 0, 3, GL_FLOAT, offsetof(FinVertex, normal));
+    fin_vao_.attribute(2, 0, 1, GL_FLOAT, offsetof(FinVertex, amount));
+    fin_vao_.attribute(3, 0, 2, GL_FLOAT, offsetof(FinVertex, along_m));
+    fin_vao_.attribute_integer(4, 0, 1, GL_UNSIGNED_INT, offsetof(FinVertex, vertex));
+}
+
+void DustGeometry::rebuild(const sim::DustField& field) {
+    const sim::DustSurface& s = field.surface();
+    std::span<const float> amount = field.amounts();
+    amounts_.update<float>(0, amount);
+    scratch_indices_.clear();
+    scratch_fins_.clear();
+    scratch_fin_indices_.clear();
+    ranges_.assign(s.props().size(), {});
+    const auto& idx = s.indices();
+    for (size_t p = 0; p < s.props().size(); ++p) {
+        const sim::DustPropRange& prop = s.props()[p];
+        DustDrawRange& r = ranges_[p];
+        r.first_shell_index = scratch_indices_.size();
+        r.first_fin_index = scratch_fin_indices_.size();
+        std::map<std::pair<uint32_t, uint32_t>, int> edges;  // how many dusty triangles share it
+        for (uint32_t t = prop.first_index; t < prop.first_index + prop.index_count; t += 3) {
+            uint32_t a = idx[t], b = idx[t + 1], c = idx[t + 2];
+            if (std::max({amount[a], amount[b], amount[c]}) <= kMinAmount) continue;
+            scratch_indices_.insert(scratch_indices_.end(), {a, b, c});
+            for (auto [u, v] : {std::pair{a, b}, {b, c}, {c, a}}) ++edges[{std::min(u, v), std::max(u, v)}];
+        }
+        // A fin on every dusty edge: it stands up across the surface at grazing angles.
+        for (const auto& [edge, count] : edges) {
+            (void)count;
+            auto [u, v] = edge;
+            glm::vec3 pu = s.positions()[u], pv = s.positions()[v];
+            float len = glm::length(pv - pu);
+            auto base = uint32_t(scratch_fins_.size());
+            for (int k = 0; k < 4; ++k) {
+                uint32_t w = (k == 0 || k == 3) ? u : v;
+                glm::vec3 p = s.positions()[w], n = s.normals()[w];
+                // Along-edge coordinate offset by where the edge lies, so fins differ.
+                float along = (w == u ? 0.0f : len) + glm::dot(pu, glm::vec3(0.37f, 0.11f, 0.61f));
+                scratch_fins_.push_back({{p.x, p.y, p.z}, {n.x, n.y, n.z}, amount[w], along, k < 2 ? 0.0f : 1.0f, w});
+            }
+            scratch_fin_indices_.insert(scratch_fin_indices_.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        }
+        r.shell_index_count = GLsizei(scratch_indices_.size() - r.first_shell_index);
+        r.fin_index_count = GLsizei(scratch_fin_indices_.size() - r.first_fin_index);
+    }
+    dusty_triangles_ = scratch_indices_.size() / 3;
+    fin_quads_ = scratch_fins_.size() / 4;
+    // Storage sized for the first (fullest) build; clearing only ever shrinks the lists.
+    auto fit = [](gl::Buffer& buffer, const char* label, size_t bytes) {
+        if (buffer.id() == 0 || size_t(buffer.size()) < bytes)
+            buffer = gl::Buffer::create(label, GLsizeiptr(std::max<size_t>(bytes, 16)));
+    };
+    fit(shell_indices_, "dust.shell_indices", scratch_indices_.size() * sizeof(uint32_t));
+    fit(fin_vertices_, "dust.fin_vertices", scratch_fins_.size() * sizeof(FinVertex));
+    fit(fin_indices_, "dust.fin_indices", scratch_fin_indices_.size() * sizeof(uint32_t));
+    if (!scratch_indices_.empty()) shell_indices_.update<uint32_t>(0, scratch_indices_);
+    if (!scratch_fins_.empty()) fin_vertices_.update<FinVertex>(0, scratch_fins_);
+    if (!scratch_fin_indices_.empty()) fin_indices_.update<uint32_t>(0, scratch_fin_indices_);
+    shell_vao_.element_buffer(shell_indices_);
+    fin_vao_.vertex_buffer(0, fin_vertices_, 0, sizeof(FinVertex));
+    fin_vao_.element_buffer(fin_indices_);
+}
+
+void DustGeometry::update(const sim::DustField& field) {
+    if (&field != field_) {
+        field_ = &field;
+        upload_static(field);
+        revision_ = ~0ull;
+    }
+    if (field.revision() != revision_) {
+        revision_ = field.revision();
+        rebuild(field);
+    }
+}
+
+}  // namespace effects

@@ -1,0 +1,14 @@
+#pragma once
+// Cost of the dusty props (seed 004, specs/dust.md "How it is measured"): the dust
+// pass over the warehouse props per frame against the same props drawn without dust,
+// fibre texture generation, and the accumulation (shadow maps and amounts) per prop.
+#include "game/bench/BenchReport.h"
+
+namespace game {
+
+// The CPU cases: fibre growth and accumulation per prop.
+void bench_dust_cpu(BenchReport& report, bool quick);
+// The GPU cases at width x height; needs a current GL context.
+void bench_dust_render(BenchReport& report, int width, int height, bool quick);
+
+}  // namespace game

@@ -1,0 +1,232 @@
+// The dust pass on a real headless context, over the harbour's warehouse props: the
+// dust shows on tops and not under the shelf's boards, a cleared patch shows, fins
+// change grazing views, shells thin out with distance. Set SPINDRIFT_DUST_PNG_DIR to
+// write the frames as PNGs.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <unistd.h>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "effects/dust/DustPass.h"
+#include "effects/gl/Framebuffer.h"
+#include "effects/gl/Texture.h"
+#include "effects/scene/EnvironmentPass.h"
+#include "effects/scene/OpaquePass.h"
+#include "effects/scene/ShadowPass.h"
+#include "effects/scene/TonemapPass.h"
+#include "game/capture/ImageFiles.h"
+#include "game/capture/Readback.h"
+#include "game/platform/HeadlessContext.h"
+#include "game/session/GameSession.h"
+#include "sim/dust/DustField.h"
+
+namespace {
+
+constexpr int kWidth = 320, kHeight = 200;
+
+// The harbour with its passes up to the dust, and a camera of the test's choosing.
+struct DustStage {
+    explicit DustStage(const std::string& level = "harbour")
+        : session(game::GameSession::open(level, 1)),
+          scene{session.level.scene, effects::SceneGeometry(session.level.scene, session.world->terrain()),
+                effects::SceneLighting(32, 1024), effects::SceneTargets{}} {
+        scene.lighting.sky.sun_dir = glm::normalize(session.world->level().sun_direction);
+        scene.targets.resize(kWidth, kHeight);
+        ldr = effects::gl::Texture::create_2d("test.ldr", GL_RGBA8, kWidth, kHeight);
+        output = effects::gl::Framebuffer::create("test.output");
+        output.attach_colour(0, ldr);
+        output.check_complete();
+    }
+
+    game::ImageRGBA8 render(const sim::CameraView& view, bool with_dust) {
+        effects::Camera camera = effects::make_camera(view, float(kWidth) / float(kHeight));
+        effects::FrameContext frame{*session.world, camera, scene, {output.id(), kWidth, kHeight}, 0.0};
+        environment.render(frame);
+        shadow.render(frame);
+        opaque.render(frame);
+        if (with_dust) dust.render(frame);
+        tonemap.render(frame);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        return game::read_framebuffer_rgba8(output.id(), kWidth, kHeight);
+    }
+    static glm::ivec2 pixel_of(const sim::CameraView& view, glm::vec3 p) {
+        effects::Camera camera = effects::make_camera(view, float(kWidth) / float(kHeight));
+        glm::vec4 c = camera.view_proj * glm::vec4(p, 1.0f);
+        glm::vec2 ndc = glm::vec2(c) / c.w;
+        return {int((ndc.x * 0.5f + 0.5f) * kWidth), int((0.5f - ndc.y * 0.5f) * kHeight)};
+    }
+    sim::DustField& field() { return session.world->get<sim::DustField>(); }
+
+    game::GameSession session;
+    effects::SceneResources scene;
+    effects::EnvironmentPass environment;
+    effects::ShadowPass shadow;
+    effects::OpaquePass opaque;
+    effects::DustPass dust;
+    effects::TonemapPass tonemap;
+    effects::gl::Texture ldr;
+    effects::gl::Framebuffer output;
+};
+
+void save(const game::ImageRGBA8& img, const std::string& name) {
+    if (const char* dir = std::getenv("SPINDRIFT_DUST_PNG_DIR")) game::write_png(std::filesystem::path(dir) / name, img);
+}
+
+// Mean and spread of the luminance over a window, and the fraction of its pixels that
+// differ from a base image.
+struct WindowStats {
+    double luma = 0.0, changed = 0.0, luma_sd = 0.0;
+};
+WindowStats stats(const game::ImageRGBA8& img, const game::ImageRGBA8* base, glm::ivec2 c, int half) {
+    WindowStats s;
+    int n = 0;
+    for (int y = std::max(c.y - half, 0); y <= std::min(c.y + half, img.height - 1); ++y)
+        for (int x = std::max(c.x - half, 0); x <= std::min(c.x + half, img.width - 1); ++x) {
+            const uint8_t* p = &img.pixels[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
+            double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            s.luma += l;
+            s.luma_sd += l * l;
+            if (base) {
+                const uint8_t* q = &base->pixels[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
+                s.changed += (std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2])) > 12;
+            }
+            ++n;
+        }
+    s.luma /= n;
+    s.luma_sd = std::sqrt(std::max(s.luma_sd / n - s.luma * s.luma, 0.0));
+    s.changed /= n;
+    return s;
+}
+
+// Close over the big crates, looking down at their tops.
+sim::CameraView crate_view() {
+    sim::CameraView v;
+    v.eye = {-47.6f, 3.6f, -44.0f};
+    v.target = {-49.6f, 2.3f, -46.0f};
+    v.fov_y_deg = 50.0f;
+    return v;
+}
+
+}  // namespace
+
+class DustRenderTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
+    static void TearDownTestSuite() { context_.reset(); }
+    static std::unique_ptr<game::HeadlessContext> context_;
+};
+std::unique_ptr<game::HeadlessContext> DustRenderTest::context_;
+
+TEST_F(DustRenderTest, DustShowsOnTopsAndAClearedPatchShowsTheCrate) {
+    DustStage stage;
+    const sim::CameraView view = crate_view();
+    game::ImageRGBA8 bare = stage.render(view, false), dusty = stage.render(view, true);
+    save(bare, "crates_bare.png");
+    save(dusty, "crates_dusty.png");
+    sim::CameraView close;
+    close.eye = {-48.5f, 2.95f, -45.7f};
+    close.target = {-49.2f, 2.43f, -46.4f};
+    close.fov_y_deg = 45.0f;
+    save(stage.render(close, true), "crates_closeup.png");
+    // The second large crate's top: covered, and lighter than the dark pine.
+    const glm::vec3 top{-49.1f, 2.43f, -46.3f};
+    const glm::ivec2 at = stage.pixel_of(view, top);
+    ASSERT_TRUE(at.x > 20 && at.x < kWidth - 20 && at.y > 20 && at.y < kHeight - 20) << at.x << "," << at.y;
+    WindowStats b = stats(bare, nullptr, at, 8), d = stats(dusty, &bare, at, 8);
+    EXPECT_GT(d.changed, 0.6) << "most of the crate top is covered";
+    EXPECT_GT(d.luma_sd, b.luma_sd + 2.0) << "fibres and bumps, not a flat coat";
+    EXPECT_GT(b.luma, 10.0) << "the crate is lit, not black";
+
+    // Blow the dust off a patch of that top: the crate shows through again there.
+    stage.field().clear_along(top + glm::vec3(0.0f, 0.2f, 0.0f), top + glm::vec3(0.0f, 0.2f, 0.0f), 0.5f);
+    game::ImageRGBA8 cleared = stage.render(view, true);
+    save(cleared, "crates_cleared.png");
+    WindowStats c = stats(cleared, &bare, at, 4);
+    EXPECT_LT(c.changed, 0.15);
+    EXPECT_NEAR(c.luma, stats(bare, nullptr, at, 4).luma, 6.0);
+}
+
+TEST_F(DustRenderTest, FinsChangeGrazingViewsAndShellsThinOutWithDistance) {
+    DustStage stage;
+    sim::CameraView grazing;
+    grazing.eye = {-49.1f, 2.47f, -44.4f};  // just above the crate top, looking across it
+    grazing.target = {-49.1f, 2.43f, -46.3f};
+    grazing.fov_y_deg = 40.0f;
+    game::ImageRGBA8 bare = stage.render(grazing, false);
+    game::ImageRGBA8 with_fins = stage.render(grazing, true);
+    stage.dust.fins_enabled() = false;
+    game::ImageRGBA8 without_fins = stage.render(grazing, true);
+    save(with_fins, "grazing_fins.png");
+    save(without_fins, "grazing_no_fins.png");
+    const glm::ivec2 at = stage.pixel_of(grazing, {-49.1f, 2.44f, -46.3f});
+    EXPECT_GT(stats(with_fins, &without_fins, at, 30).changed, 0.02);
+    EXPECT_GT(stats(with_fins, &bare, at, 30).changed, 0.05);
+
+    EXPECT_EQ(stage.dust.shells_at(1.0f), stage.dust.lod().max_shells);
+    EXPECT_GT(stage.dust.shells_at(2.0f), stage.dust.shells_at(10.0f));
+    EXPECT_EQ(stage.dust.shells_at(500.0f), stage.dust.lod().min_shells);
+}
+
+TEST_F(DustRenderTest, UnderTheShelfBoardsThereIsLittleDust) {
+    DustStage stage;
+    sim::CameraView v;
+    v.eye = {-39.6f, 3.9f, -46.6f};
+    v.target = {-40.0f, 2.3f, -49.35f};
+    v.fov_y_deg = 55.0f;
+    game::ImageRGBA8 bare = stage.render(v, false), dusty = stage.render(v, true);
+    save(bare, "shelf_bare.png");
+    save(dusty, "shelf_dusty.png");
+    sim::DustField& f = stage.field();
+    const float top = f.amount_near({-40.0f, 2.88f, -49.35f}), middle = f.amount_near({-40.0f, 2.18f, -49.4f});
+    EXPECT_GT(top, 0.6f);
+    EXPECT_LT(middle, 0.6f * top);
+    // The top board is covered on screen; the dust changed it.
+    EXPECT_GT(stats(dusty, &bare, stage.pixel_of(v, {-40.0f, 2.88f, -49.12f}), 2).changed, 0.5);
+}
+
+TEST_F(DustRenderTest, SandAndMouldPresetsComeFromTheSameMachinery) {
+    // The harbour with its crates under sand and the small crate under mould.
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("spindrift_dust_presets_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path data = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "levels";
+    std::ifstream in(data / "harbour.json");
+    std::string json{std::istreambuf_iterator<char>(in), {}};
+    auto swap = [&](const std::string& from, const std::string& to) {
+        for (size_t at = json.find(from); at != std::string::npos; at = json.find(from, at + to.size())) json.replace(at, from.size(), to);
+    };
+    swap("\"crate_large.gltf\", \"dust\": true", "\"crate_large.gltf\", \"dust\": \"sand\"");
+    swap("\"crate_small.gltf\", \"dust\": true", "\"crate_small.gltf\", \"dust\": \"mould\"");
+    std::ofstream(dir / "presets.json") << json;
+    fs::create_directory_symlink(data / "harbour", dir / "presets");
+    game::ImageRGBA8 dust, sand;
+    {
+        DustStage stage;
+        dust = stage.render(crate_view(), true);
+    }
+    {
+        DustStage stage((dir / "presets.json").string());
+        sand = stage.render(crate_view(), true);
+        save(sand, "crates_sand_mould.png");
+        EXPECT_EQ(stage.field().surface().props()[0].kind, sim::DustKind::Sand);
+        // Sand slides off anything steeper than its angle of repose: the crate sides
+        // hold none even where dust would lie thinly.
+        const auto& s = stage.field().surface();
+        for (uint32_t v = 0; v < s.props()[0].vertex_count; v += 7) {
+            if (s.normals()[s.props()[0].first_vertex + v].y < 0.7f) {
+                EXPECT_EQ(stage.field().amounts()[s.props()[0].first_vertex + v], 0.0f);
+            }
+        }
+    }
+    fs::remove_all(dir);
+    const glm::ivec2 at = DustStage::pixel_of(crate_view(), {-49.1f, 2.43f, -46.3f});
+    EXPECT_GT(stats(sand, &dust, at, 8).changed, 0.5) << "sand looks unlike dust";
+}
