@@ -25,7 +25,7 @@
 //     "boat": {"asset": "boat.gltf", "position": [x, y, z], "heading_deg": -90},  required
 //     "tank_spot": [22, 1.5, 36],        required: where the fluid tank stands
 //     "fluid": {                         optional: the glass tank of liquid (specs/fluid.md)
-//       "particle_count": 3000,          1..200000, must fit the tank at the rest spacing
+//       "particle_count": 2400,          1..200000, must fit the tank at the rest spacing
 //       "particle_radius_m": 0.04,       (0, 1]
 //       "tank_size_m": [1.6, 1.1, 1.6],  inner size, each (0, 20]
 //       "solver_iterations": 3,          1..20

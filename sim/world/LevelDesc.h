@@ -63,7 +63,7 @@ struct FluidTankDesc {
     bool on_boat = false;                  // rides the boat's deck instead of the pier
     glm::vec3 inner_size_m{1.6f, 1.1f, 1.6f};  // filled from the floor up at the rest spacing
     float particle_radius_m = 0.04f;
-    int particle_count = 3000;             // a tick within 6 ms on 2 threads (spindrift bench)
+    int particle_count = 2400;             // a tick within 6 ms on 2 idle cores (spindrift bench)
     int solver_iterations = 3;
     int body_neighbours = 12;              // fewer neighbours than this: splash
     std::string smoothing = "plane_fit";   // "plane_fit" | "bilateral" | "narrow_range"
