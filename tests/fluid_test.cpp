@@ -222,6 +222,31 @@ TEST(FluidTank, StandsOnItsSpotAndAThrownStoneSplashesIt) {
     EXPECT_GT(splash, calm_splash + 20u);
 }
 
+TEST(FluidTank, SleepsWhenCalmAndWakesForAThrownStone) {
+    sim::World world(tank_level());
+    const sim::FluidTank& tank = world.get<sim::FluidTank>();
+    int t = 0;
+    while (!tank.asleep() && t < 1800) {
+        world.step({});
+        ++t;
+    }
+    ASSERT_TRUE(tank.asleep()) << "the liquid never calmed down";
+    // Asleep, the liquid does not move at all.
+    const std::vector<glm::vec3> before = tank.fluid().positions();
+    for (int k = 0; k < 30; ++k) world.step({});
+    EXPECT_EQ(tank.fluid().positions(), before);
+    // A stone dropped into it wakes it, and it splashes.
+    const float calm_top = highest(tank.fluid());
+    world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.5f, 30.0f}, {0, 0, 1}, {0, 0, 0});
+    float top = 0.0f;
+    for (int k = 0; k < 60; ++k) {
+        world.step({});
+        top = std::max(top, highest(tank.fluid()));
+    }
+    EXPECT_FALSE(tank.asleep());
+    EXPECT_GT(top, calm_top + 0.1f);
+}
+
 TEST(FluidTank, RidesTheBoatAndItsAccelerationSloshesIt) {
     sim::World world(tank_level(true));
     const sim::FluidTank& tank = world.get<sim::FluidTank>();

@@ -19,6 +19,9 @@ namespace {
 
 constexpr float kGravity = 9.81f;
 constexpr float kMaxTankAccel = 40.0f;  // a teleported boat must not blow the liquid out
+constexpr float kWakeAccel = 0.05f;       // m/s^2 of tank motion that wakes a sleeping liquid
+constexpr float kSleepMeanSpeed = 0.02f;  // m/s: below this on average the surface looks still
+constexpr uint32_t kSleepAfterTicks = 30;
 
 ParticleFluidParams fluid_params(const FluidTankDesc& d) {
     if (d.particle_count < 1 || d.particle_count > 200000)
@@ -83,7 +86,19 @@ void FluidTank::step(StepContext& ctx) {
             if (local.y < size.y) ++objects_inside_;
         }
     }
+    const float tank_accel = std::sqrt(accel.x * accel.x + accel.y * accel.y + accel.z * accel.z);
+    if (!spheres_.empty() || tank_accel > kWakeAccel) {
+        asleep_ = false;
+        calm_ticks_ = 0;
+    }
+    if (asleep_) return;
     fluid_.step(ctx.dt, local_accel, spheres_, ctx.jobs);
+    // Calm: the mean particle speed, summed in index order (the same for any threads).
+    float speed_sum = 0.0f;
+    for (const glm::vec3& v : fluid_.velocities()) speed_sum += std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    const bool calm = speed_sum < kSleepMeanSpeed * float(fluid_.velocities().size());
+    calm_ticks_ = calm ? calm_ticks_ + 1 : 0;
+    asleep_ = calm_ticks_ >= kSleepAfterTicks;
 }
 
 std::vector<Aabb> tank_walls(const FluidTankDesc& desc, glm::vec3 spot) {
@@ -105,6 +120,8 @@ uint64_t FluidTank::hash() const {
     h.vec(origin_prev_[1]);
     h.u32(ticks_);
     h.i32(objects_inside_);
+    h.u32(calm_ticks_);
+    h.u32(asleep_ ? 1u : 0u);
     return hash_combine(h.value(), fluid_.hash());
 }
 

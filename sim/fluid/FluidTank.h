@@ -34,6 +34,7 @@ public:
     const glm::mat4& tank_to_world() const { return tank_to_world_; }
     // Objects inside the tank's volume during the last step.
     int objects_inside() const { return objects_inside_; }
+    bool asleep() const { return asleep_; }
 
 private:
     glm::mat4 pose_at(const class World& world) const;
@@ -45,6 +46,10 @@ private:
     glm::vec3 origin_prev_[2]{};  // the tank origin one and two ticks ago
     uint32_t ticks_ = 0;
     int objects_inside_ = 0;
+    // Sleeping (as rigid bodies do): a calm liquid with nothing near it and a still
+    // tank is not stepped. Most of the harbour's time the tank just stands there.
+    uint32_t calm_ticks_ = 0;
+    bool asleep_ = false;
     std::vector<FluidSphere> spheres_;  // scratch
 };
 
