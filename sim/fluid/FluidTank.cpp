@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "sim/core/Hash.h"
@@ -20,6 +21,7 @@ namespace {
 constexpr float kGravity = 9.81f;
 constexpr float kMaxTankAccel = 40.0f;  // a teleported boat must not blow the liquid out
 constexpr float kWakeAccel = 0.05f;       // m/s^2 of tank motion that wakes a sleeping liquid
+constexpr float kWakeSpeed = 0.05f;       // m/s of an object in or over the tank that wakes it
 constexpr float kSleepMeanSpeed = 0.02f;  // m/s: below this on average the surface looks still
 constexpr uint32_t kSleepAfterTicks = 30;
 
@@ -87,7 +89,11 @@ void FluidTank::step(StepContext& ctx) {
         }
     }
     const float tank_accel = std::sqrt(accel.x * accel.x + accel.y * accel.y + accel.z * accel.z);
-    if (!spheres_.empty() || tank_accel > kWakeAccel) {
+    // Woken by tank motion or anything moving in or over it (a stone at rest on the
+    // floor does not keep it awake).
+    bool stirred = tank_accel > kWakeAccel;
+    for (const FluidSphere& o : spheres_) stirred = stirred || glm::dot(o.velocity, o.velocity) > kWakeSpeed * kWakeSpeed;
+    if (stirred) {
         asleep_ = false;
         calm_ticks_ = 0;
     }

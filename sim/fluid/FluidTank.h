@@ -47,9 +47,10 @@ private:
     uint32_t ticks_ = 0;
     int objects_inside_ = 0;
     // Sleeping (as rigid bodies do): a calm liquid with nothing near it and a still
-    // tank is not stepped. Most of the harbour's time the tank just stands there.
+    // tank is not stepped. Most of the harbour's time the tank just stands there, so it
+    // starts asleep as filled, and wakes for the first object or tank motion.
     uint32_t calm_ticks_ = 0;
-    bool asleep_ = false;
+    bool asleep_ = true;
     std::vector<FluidSphere> spheres_;  // scratch
 };
 
