@@ -239,6 +239,10 @@ TEST_F(Cli, ARecordingKilledMidwayReplaysUpToItsLastWholeChunk) {
     EXPECT_EQ(r.code, 0) << r.output;
     EXPECT_NE(r.output.find("cut after tick"), std::string::npos) << r.output;
     EXPECT_EQ(run("replay " + partial.string() + " --headless --check --frames none --strict").code, 3);
+    // Asked for the name it was recording to, the replay command points at the rest.
+    CommandResult missing = run("replay " + out.string() + " --headless --check --frames none");
+    EXPECT_EQ(missing.code, 3);
+    EXPECT_NE(missing.output.find(partial.string()), std::string::npos) << missing.output;
 }
 
 TEST_F(Cli, FrameChecksCatchAWrongGoldenAndNameTheEvidence) {

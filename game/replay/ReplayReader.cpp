@@ -263,7 +263,15 @@ Replay read_replay(const std::filesystem::path& path, const ReadOptions& options
     const std::string name = path.string();
     // O_NONBLOCK so that opening a FIFO cannot hang; anything but a regular file is refused.
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) throw ReplayError("cannot open replay " + name + ": " + std::strerror(errno));
+    if (fd < 0) {
+        const int err = errno;
+        std::error_code ec;
+        // A recording that was killed or failed keeps what it had under NAME.partial.
+        const std::string hint = err == ENOENT && std::filesystem::is_regular_file(name + ".partial", ec)
+                                     ? " (a recording cut short is at " + name + ".partial: replay that)"
+                                     : "";
+        throw ReplayError("cannot open replay " + name + ": " + std::strerror(err) + hint);
+    }
     FdCloser closer{fd};
     struct stat st {};
     if (::fstat(fd, &st) != 0) throw ReplayError("cannot read replay " + name + ": " + std::strerror(errno));
