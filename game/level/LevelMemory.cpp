@@ -21,11 +21,32 @@ void charge_water(const sim::LevelDesc& level, MemoryBudget& budget) {
     budget.charge("water: splash sheets and spray", kWaterFixedBytes);
 }
 
+// Fluid tank (specs/fluid.md), per particle: the solver's state, neighbour lists and
+// cached gradients, and the renderer's anisotropic kernels and instance buffers.
+constexpr uint64_t kFluidBytesPerParticle = 2048;
+
+void charge_fluid(const sim::LevelDesc& level, MemoryBudget& budget) {
+    if (!level.fluid.enabled) return;
+    const uint64_t n = uint64_t(level.fluid.particle_count);
+    budget.charge("fluid: tank of " + to_string(n) + " particles", n * kFluidBytesPerParticle);
+}
+
+// Dust (specs/dust.md): the props' amounts on their resampled meshes, the sources'
+// shadow maps and the 10-layer fibre volume with its mips. The meshes are only known
+// once the assets load; this bounds a warehouse's worth at the default spacing.
+constexpr uint64_t kDustFixedBytes = 48 * kMiB;
+
+void charge_dust(const sim::LevelDesc& level, MemoryBudget& budget) {
+    if (level.dust.enabled) budget.charge("dust: dusty props and fibre volume", kDustFixedBytes);
+}
+
 }  // namespace
 
 void charge_level_memory(const sim::LevelDesc& level, MemoryBudget& budget) {
     budget.charge("program base", kProgramBaseBytes);
     charge_water(level, budget);
+    charge_fluid(level, budget);
+    charge_dust(level, budget);
 }
 
 void charge_frame_memory(uint32_t width, uint32_t height, MemoryBudget& budget) {
