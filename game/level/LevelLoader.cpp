@@ -208,6 +208,7 @@ private:
                               "source_distance", "sample_spacing_m", "object_clear_radius_m", "shot_clear_radius_m"});
         out.present = true;
         sim::DustDesc& g = level.dust;
+        g.enabled = true;  // known now, so the memory budget can charge it
         if (const json* p = LevelReader::optional(d, "preset")) out.preset = dust_kind(*p, "dust.preset");
         out.fibre_image = r_.string(r_.required(d, "dust", "fibre_image"), "dust.fibre_image");
         fs::path image(out.fibre_image);
