@@ -3,6 +3,9 @@
 // One instance per subsystem, stored in the state it drives.
 #include <cstdint>
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
 namespace sim {
 
 class Rng {
@@ -23,6 +26,17 @@ public:
     // Uniform in [0, 1): 24 random bits, exact in float.
     float unit() { return float(next_u32() >> 8) * (1.0f / 16777216.0f); }
     float range(float lo, float hi) { return lo + (hi - lo) * unit(); }
+    // Vectors draw x, then y, then z. Never draw twice inside one call's arguments
+    // (glm::vec2(unit(), unit())): their order is unspecified, and gcc and clang differ.
+    glm::vec2 unit2() {
+        const float x = unit();
+        return {x, unit()};
+    }
+    glm::vec3 range3(float lo, float hi) {
+        const float x = range(lo, hi);
+        const float y = range(lo, hi);
+        return {x, y, range(lo, hi)};
+    }
     // Uniform integer in [0, n) without modulo bias (Lemire's method, rejection).
     uint32_t below(uint32_t n) {
         uint64_t m = uint64_t(next_u32()) * n;

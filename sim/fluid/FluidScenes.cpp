@@ -23,7 +23,7 @@ std::vector<glm::vec3> fill_block(glm::vec3 lo, glm::vec3 hi, float r, int count
     for (int j = 0; j < ny && int(out.size()) < count; ++j)
         for (int k = 0; k < nz && int(out.size()) < count; ++k)
             for (int i = 0; i < nx && int(out.size()) < count; ++i) {
-                glm::vec3 jitter(rng.range(-0.1f, 0.1f), rng.range(-0.1f, 0.1f), rng.range(-0.1f, 0.1f));
+                const glm::vec3 jitter = rng.range3(-0.1f, 0.1f);
                 out.push_back(lo + glm::vec3(r) + (glm::vec3(float(i), float(j), float(k)) + jitter) * s);
             }
     return out;

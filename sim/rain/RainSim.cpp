@@ -195,7 +195,7 @@ void RainSim::rain(float intensity, float car_speed_mps, float dt) {
     const int count = int(rate * dt + rng_.unit());
     const glm::vec2 extent = glm::vec2(float(glass_.cols()), float(glass_.rows())) * glass_.cell_m();
     for (int k = 0; k < count; ++k) {
-        glm::vec2 pos(rng_.unit() * extent.x, rng_.unit() * extent.y);
+        const glm::vec2 pos = rng_.unit2() * extent;
         float mass = rng_.range(p_.new_drop_min_mg, p_.new_drop_max_mg);
         if (int(drops_.size()) >= p_.max_drops && cell_drop_[size_t(glass_.cell_of(pos))] < 0) continue;  // full
         new_drop(pos, mass, 0);
@@ -301,7 +301,7 @@ bool RainSim::step_cell(size_t i) {
     drops_[i] = d;
     cell_drop_[size_t(to)] = int32_t(i);
     if (trail_mass > 0.0f) {
-        glm::vec2 jitter = (glm::vec2(rng_.unit(), rng_.unit()) - 0.5f) * (0.6f * glass_.cell_m());
+        glm::vec2 jitter = (rng_.unit2() - 0.5f) * (0.6f * glass_.cell_m());
         new_drop(glass_.centre(from) + jitter, trail_mass, RainDrop::kTrail);
     }
     return true;
@@ -343,7 +343,7 @@ void RainSim::sweep(const WiperBlade& blade) {
         const float each = mass / float(n);
         for (int k = 0; k < n; ++k) {
             glm::vec2 at = d.pos_m;
-            if (k > 0) at += (glm::vec2(rng_.unit(), rng_.unit()) - 0.5f) * (2.0f * r);
+            if (k > 0) at += (rng_.unit2() - 0.5f) * (2.0f * r);
             particles_.push_back({at, each, 0u});
         }
     }
