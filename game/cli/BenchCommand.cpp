@@ -1,8 +1,10 @@
-// spindrift bench [--json FILE] [--quick]
+// spindrift bench [--json FILE] [--quick] [--only GROUP,...]
 #include <chrono>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "effects/Renderer.h"
@@ -114,30 +116,62 @@ void bench_render(BenchReport& report, int width, int height, int frames) {
 }  // namespace
 
 int bench_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--json"}, {"--quick"});
+    Args args(argv, {"--json", "--only"}, {"--quick"});
     if (!args.positional().empty()) throw UsageError("bench takes no positional arguments");
     const bool quick = args.flag("--quick");
+    // --only a,b: just those groups, to measure one effect without the rest.
+    const std::set<std::string> groups = {"sim", "replay", "water", "dust", "fluid", "render", "energy", "rain"};
+    std::set<std::string> only;
+    if (auto list = args.value("--only")) {
+        std::stringstream in(*list);
+        for (std::string g; std::getline(in, g, ',');) {
+            if (!groups.count(g))
+                throw UsageError("--only: unknown group '" + g +
+                                 "' (sim, replay, water, dust, fluid, render, energy, rain)");
+            only.insert(g);
+        }
+    }
+    auto runs = [&](const char* group) { return only.empty() || only.count(group) != 0; };
     BenchReport report;
-    std::cerr << "bench: sim\n";
-    bench_sim(report, quick ? 300 : 1800);
-    std::cerr << "bench: replay check\n";
-    bench_replay_check(report, quick ? 300 : 1800);
-    std::cerr << "bench: water\n";
-    bench_water(report, quick);
-    std::cerr << "bench: dust\n";
-    bench_dust_cpu(report, quick);
+    if (runs("sim")) {
+        std::cerr << "bench: sim\n";
+        bench_sim(report, quick ? 300 : 1800);
+    }
+    if (runs("replay")) {
+        std::cerr << "bench: replay check\n";
+        bench_replay_check(report, quick ? 300 : 1800);
+    }
+    if (runs("water")) {
+        std::cerr << "bench: water\n";
+        bench_water(report, quick);
+    }
+    if (runs("dust")) {
+        std::cerr << "bench: dust\n";
+        bench_dust_cpu(report, quick);
+    }
 
     HeadlessContext context;
-    bench_fluid(report, quick);
-    std::cerr << "bench: render (" << context.renderer() << ")\n";
-    bench_render(report, 640, 360, quick ? 3 : 8);
-    bench_render(report, 1280, 720, quick ? 3 : 8);
-    std::cerr << "bench: energy\n";
-    bench_energy(report, quick);
-    std::cerr << "bench: rain\n";
-    bench_rain(report, quick);
-    bench_dust_render(report, 640, 360, quick);
-    bench_dust_render(report, 1280, 720, quick);
+    if (runs("fluid")) {
+        std::cerr << "bench: fluid\n";
+        bench_fluid(report, quick);
+    }
+    if (runs("render")) {
+        std::cerr << "bench: render (" << context.renderer() << ")\n";
+        bench_render(report, 640, 360, quick ? 3 : 8);
+        bench_render(report, 1280, 720, quick ? 3 : 8);
+    }
+    if (runs("energy")) {
+        std::cerr << "bench: energy\n";
+        bench_energy(report, quick);
+    }
+    if (runs("rain")) {
+        std::cerr << "bench: rain\n";
+        bench_rain(report, quick);
+    }
+    if (runs("dust")) {
+        bench_dust_render(report, 640, 360, quick);
+        bench_dust_render(report, 1280, 720, quick);
+    }
     report.add({"memory", "peak resident after 1280x720 frames", peak_resident_mib(), "MiB", 1024.0});
 
     report.print_table();

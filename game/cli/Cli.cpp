@@ -37,7 +37,7 @@ commands:
          ticks to render (default: the checkpoints). --out writes the frames as PNG,
          --exr also as EXR (half-float HDR colour, depth, normals). --strict refuses a
          replay that was cut short. --update-goldens rewrites the goldens.
-  bench  [--json FILE] [--quick]
+  bench  [--json FILE] [--quick] [--only sim,replay,water,dust,fluid,render,energy,rain]
          Time the sim per subsystem, the replay check and each render pass at 1280x720
          and 640x360; prints a table and writes JSON.
   fibres IMAGE [--slices N] [--layers OUT.png]  |  fibres --draw OUT.png [--slices N]
