@@ -19,6 +19,7 @@
 #include "effects/dust/FibreDirections.h"
 #include "effects/dust/FibreTexture.h"
 #include "effects/dust/FibreVolume.h"
+#include "effects/dust/SkyExposure.h"
 #include "game/capture/ImageFiles.h"
 #include "game/dust/FibreImage.h"
 #include "game/level/LevelLoader.h"
@@ -287,6 +288,30 @@ TEST(DustAmounts, InsideTheHarboursPipeAndBarrelLessThanOnTheirTops) {
         EXPECT_GT(top, 0.5);
         EXPECT_LT(inside, 0.6 * top);
     }
+}
+
+TEST(DustLight, TheWarehouseRoofHidesTheSkyFromTheDustInside) {
+    game::LoadedLevel level = game::load_level("harbour");
+    const sim::DustField field(level.sim.dust);
+    const sim::DustSurface& s = field.surface();
+    auto nearest = [&](glm::vec3 p) {
+        size_t best = 0;
+        for (size_t v = 0; v < s.positions().size(); ++v)
+            if (glm::distance(s.positions()[v], p) < glm::distance(s.positions()[best], p)) best = v;
+        return best;
+    };
+    const size_t crate_top = nearest({-49.1f, 2.43f, -46.3f}), shelf_top = nearest({-40.0f, 2.88f, -49.35f});
+    const std::vector<float> roofed = effects::sky_exposure(s, level.scene);
+    ASSERT_EQ(roofed.size(), s.positions().size());
+    // Without the building the same tops see the open sky.
+    std::erase_if(level.scene.props, [&](const effects::PropInstance& p) { return level.scene.models[size_t(p.model)].name == "warehouse"; });
+    const std::vector<float> open = effects::sky_exposure(s, level.scene);
+    std::printf("sky exposure: crate top %.2f under the roof, %.2f without it; shelf top %.2f, %.2f\n", roofed[crate_top],
+                open[crate_top], roofed[shelf_top], open[shelf_top]);
+    EXPECT_LT(roofed[crate_top], 0.2f);
+    EXPECT_LT(roofed[shelf_top], 0.2f);
+    EXPECT_GT(open[crate_top], 0.9f);
+    EXPECT_GT(open[shelf_top], 0.9f);
 }
 
 TEST(DustBadInput, FibreImagesThatAreNotBinaryEmptyOrUnreadableAreRefused) {
