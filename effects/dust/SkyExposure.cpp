@@ -26,17 +26,19 @@ std::vector<float> sky_exposure(const sim::DustSurface& surface, const SceneDesc
         const float azimuth = 1.5707963f * (float(k) + 0.5f);
         directions.push_back(glm::normalize(glm::vec3(std::cos(azimuth), 1.0f, std::sin(azimuth))));
     }
+    std::vector<glm::vec3> triangles;  // world space, three corners each
+    for (const PropInstance& inst : scene.props)
+        for (const MeshData& mesh : scene.models[size_t(inst.model)].meshes)
+            for (uint32_t i : mesh.indices) triangles.push_back(glm::vec3(inst.transform * glm::vec4(mesh.vertices[i].position, 1.0f)));
     std::vector<float> exposure(surface.positions().size(), 0.0f);
     for (const sim::DustPropRange& prop : surface.props()) {
         std::vector<sim::SourceDepthMap> maps;
         for (glm::vec3 d : directions) {
             sim::SourceDepthMap& map = maps.emplace_back(prop.centre() + d * (4.0f * kReach_m), prop.centre(), kReach_m, kMapSize);
-            for (const PropInstance& inst : scene.props)
-                for (const MeshData& mesh : scene.models[size_t(inst.model)].meshes)
-                    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-                        auto at = [&](size_t i) { return glm::vec3(inst.transform * glm::vec4(mesh.vertices[mesh.indices[i]].position, 1.0f)); };
-                        map.rasterise(at(t), at(t + 1), at(t + 2));
-                    }
+            for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+                // Every direction climbs: wholly below the prop, nothing hides its sky.
+                if (std::max({triangles[t].y, triangles[t + 1].y, triangles[t + 2].y}) > prop.bounds.min.y)
+                    map.rasterise(triangles[t], triangles[t + 1], triangles[t + 2]);
         }
         for (uint32_t v = prop.first_vertex; v < prop.first_vertex + prop.vertex_count; ++v) {
             const glm::vec3 n = surface.normals()[v], p = surface.positions()[v];

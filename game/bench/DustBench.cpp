@@ -13,6 +13,7 @@
 #include "effects/dust/DustPass.h"
 #include "effects/dust/FibreTexture.h"
 #include "effects/dust/FibreVolume.h"
+#include "effects/dust/SkyExposure.h"
 #include "effects/gl/Program.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/ShadowPass.h"
@@ -88,6 +89,10 @@ void bench_dust_cpu(BenchReport& report, bool quick) {
     sim::DustSurface surface(desc.props, desc.sample_spacing_m);
     report.add({"dust", "tessellation of the dusty props", ms_since(start), "ms", std::nullopt, false,
                 std::to_string(surface.positions().size()) + " vertices at " + fmt("%.2f m", desc.sample_spacing_m)});
+    start = Clock::now();
+    effects::sky_exposure(surface, level.scene);
+    report.add({"dust", "sky exposure of the dusty props", ms_since(start), "ms", std::nullopt, false,
+                "once, at the first dust frame: 5 maps per prop of every scene prop"});
     std::vector<float> amounts(surface.positions().size());
     for (size_t p = 0; p < surface.props().size(); ++p) {
         start = Clock::now();
