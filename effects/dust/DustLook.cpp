@@ -9,7 +9,7 @@ DustLook dust_look(sim::DustKind kind) {
             look.colour = {0.62f, 0.59f, 0.54f};
             look.deep_colour = {0.34f, 0.32f, 0.29f};
             look.height_m = 0.018f;
-            look.tile_m = 0.25f;  // 2 mm texels: fibres of 30 steps are about 6 cm long
+            look.tile_m = 0.25f;  // 2 mm texels: a fibre of 30 steps spans at most 6 cm
             look.growth = {.fibres = 1600, .steps = 30, .bend_probability = 0.08f, .direction_bias = 4.0f, .climb = 0.2f};
             break;
         case sim::DustKind::Sand:  // grains: short walks that curl up into blobs
