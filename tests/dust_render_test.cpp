@@ -1,7 +1,8 @@
 // The dust pass on a real headless context, over the harbour's warehouse props: the
 // dust shows on tops and not under the shelf's boards, a cleared patch shows, fins
-// change grazing views, shells thin out with distance. Set SPINDRIFT_DUST_PNG_DIR to
-// write the frames as PNGs.
+// change grazing views, shells thin out with distance, and a close-up of the crates
+// matches its golden in tests/data/dust. SPINDRIFT_UPDATE_GOLDENS=1 rewrites the
+// golden; SPINDRIFT_DUST_PNG_DIR=dir writes the frames there too.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -22,6 +23,7 @@
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/ShadowPass.h"
 #include "effects/scene/TonemapPass.h"
+#include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
 #include "game/capture/Readback.h"
 #include "game/platform/HeadlessContext.h"
@@ -34,28 +36,28 @@ constexpr int kWidth = 320, kHeight = 200;
 
 // The harbour with its passes up to the dust, and a camera of the test's choosing.
 struct DustStage {
-    explicit DustStage(const std::string& level = "harbour")
-        : session(game::GameSession::open(level, 1)),
+    explicit DustStage(const std::string& level = "harbour", int w = kWidth, int h = kHeight)
+        : width(w), height(h), session(game::GameSession::open(level, 1)),
           scene{session.level.scene, effects::SceneGeometry(session.level.scene, session.world->terrain()),
                 effects::SceneLighting(32, 1024), effects::SceneTargets{}} {
         scene.lighting.sky.sun_dir = glm::normalize(session.world->level().sun_direction);
-        scene.targets.resize(kWidth, kHeight);
-        ldr = effects::gl::Texture::create_2d("test.ldr", GL_RGBA8, kWidth, kHeight);
+        scene.targets.resize(width, height);
+        ldr = effects::gl::Texture::create_2d("test.ldr", GL_RGBA8, width, height);
         output = effects::gl::Framebuffer::create("test.output");
         output.attach_colour(0, ldr);
         output.check_complete();
     }
 
     game::ImageRGBA8 render(const sim::CameraView& view, bool with_dust) {
-        effects::Camera camera = effects::make_camera(view, float(kWidth) / float(kHeight));
-        effects::FrameContext frame{*session.world, camera, scene, {output.id(), kWidth, kHeight}, 0.0};
+        effects::Camera camera = effects::make_camera(view, float(width) / float(height));
+        effects::FrameContext frame{*session.world, camera, scene, {output.id(), width, height}, 0.0};
         environment.render(frame);
         shadow.render(frame);
         opaque.render(frame);
         if (with_dust) dust.render(frame);
         tonemap.render(frame);
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-        return game::read_framebuffer_rgba8(output.id(), kWidth, kHeight);
+        return game::read_framebuffer_rgba8(output.id(), width, height);
     }
     static glm::ivec2 pixel_of(const sim::CameraView& view, glm::vec3 p) {
         effects::Camera camera = effects::make_camera(view, float(kWidth) / float(kHeight));
@@ -65,6 +67,7 @@ struct DustStage {
     }
     sim::DustField& field() { return session.world->get<sim::DustField>(); }
 
+    int width, height;
     game::GameSession session;
     effects::SceneResources scene;
     effects::EnvironmentPass environment;
@@ -115,6 +118,16 @@ sim::CameraView crate_view() {
     return v;
 }
 
+// Half a metre over the second large crate's top, looking down across it to the
+// small crate standing on the first: close enough to see single fibres.
+sim::CameraView close_view() {
+    sim::CameraView v;
+    v.eye = {-48.5f, 2.95f, -45.7f};
+    v.target = {-49.2f, 2.43f, -46.4f};
+    v.fov_y_deg = 45.0f;
+    return v;
+}
+
 }  // namespace
 
 class DustRenderTest : public ::testing::Test {
@@ -131,11 +144,6 @@ TEST_F(DustRenderTest, DustShowsOnTopsAndAClearedPatchShowsTheCrate) {
     game::ImageRGBA8 bare = stage.render(view, false), dusty = stage.render(view, true);
     save(bare, "crates_bare.png");
     save(dusty, "crates_dusty.png");
-    sim::CameraView close;
-    close.eye = {-48.5f, 2.95f, -45.7f};
-    close.target = {-49.2f, 2.43f, -46.4f};
-    close.fov_y_deg = 45.0f;
-    save(stage.render(close, true), "crates_closeup.png");
     // The second large crate's top: covered, and lighter than the dark pine.
     const glm::vec3 top{-49.1f, 2.43f, -46.3f};
     const glm::ivec2 at = stage.pixel_of(view, top);
@@ -208,6 +216,7 @@ TEST_F(DustRenderTest, SandAndMouldPresetsComeFromTheSameMachinery) {
     std::ofstream(dir / "presets.json") << json;
     fs::create_directory_symlink(data / "harbour", dir / "presets");
     game::ImageRGBA8 dust, sand;
+    glm::vec3 small_top{0.0f};
     {
         DustStage stage;
         dust = stage.render(crate_view(), true);
@@ -217,6 +226,9 @@ TEST_F(DustRenderTest, SandAndMouldPresetsComeFromTheSameMachinery) {
         sand = stage.render(crate_view(), true);
         save(sand, "crates_sand_mould.png");
         EXPECT_EQ(stage.field().surface().props()[0].kind, sim::DustKind::Sand);
+        const sim::DustPropRange& small = stage.field().surface().props()[2];
+        EXPECT_EQ(small.kind, sim::DustKind::Mould);
+        small_top = {small.centre().x, small.bounds.max.y, small.centre().z};
         // Sand slides off anything steeper than its angle of repose: the crate sides
         // hold none even where dust would lie thinly.
         const auto& s = stage.field().surface();
@@ -229,4 +241,30 @@ TEST_F(DustRenderTest, SandAndMouldPresetsComeFromTheSameMachinery) {
     fs::remove_all(dir);
     const glm::ivec2 at = DustStage::pixel_of(crate_view(), {-49.1f, 2.43f, -46.3f});
     EXPECT_GT(stats(sand, &dust, at, 8).changed, 0.5) << "sand looks unlike dust";
+    const glm::ivec2 small_at = DustStage::pixel_of(crate_view(), small_top);
+    ASSERT_TRUE(small_at.x > 6 && small_at.x < kWidth - 6 && small_at.y > 6 && small_at.y < kHeight - 6)
+        << small_at.x << "," << small_at.y;
+    const WindowStats mould = stats(sand, &dust, small_at, 3);
+    EXPECT_GT(mould.changed, 0.5) << "mould looks unlike dust";
+    EXPECT_LT(mould.luma, stats(dust, nullptr, small_at, 3).luma) << "mould is darker than dust";
+}
+
+// The README's close-up: a frame check against tests/data/dust/crates_closeup.png at
+// 640x360, so a change to the fibres, shells or their light shows as a failure here.
+TEST_F(DustRenderTest, CloseUpOfTheCratesMatchesItsGolden) {
+    constexpr int W = 640, H = 360;
+    DustStage stage("harbour", W, H);
+    const game::ImageRGBA8 bare = stage.render(close_view(), false), dusty = stage.render(close_view(), true);
+    save(dusty, "crates_closeup.png");
+    // Most of the frame is the dusty crate top, and it is not a flat coat.
+    const WindowStats d = stats(dusty, &bare, {W / 2, H / 2}, 60);
+    EXPECT_GT(d.changed, 0.6);
+    EXPECT_GT(d.luma_sd, 4.0);
+    const std::filesystem::path golden = std::filesystem::path(SPINDRIFT_TEST_DATA) / "dust" / "crates_closeup.png";
+    if (const char* update = std::getenv("SPINDRIFT_UPDATE_GOLDENS"); update && std::string(update) == "1") {
+        std::filesystem::create_directories(golden.parent_path());
+        game::write_png(golden, dusty);
+    }
+    const game::CompareResult r = game::compare_frames(dusty, game::read_png(golden));
+    EXPECT_TRUE(r.passed) << golden << ": " << r.summary;
 }

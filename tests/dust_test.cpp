@@ -3,6 +3,7 @@
 // cleared by thrown objects and shots as sim state, and bad input.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numeric>
@@ -18,12 +19,14 @@
 #include "effects/dust/FibreDirections.h"
 #include "effects/dust/FibreTexture.h"
 #include "effects/dust/FibreVolume.h"
+#include "effects/dust/SkyExposure.h"
 #include "game/capture/ImageFiles.h"
 #include "game/dust/FibreImage.h"
 #include "game/level/LevelLoader.h"
 #include "sim/dust/DustAccumulation.h"
 #include "sim/dust/DustField.h"
 #include "sim/objects/ThrownObjects.h"
+#include "sim/weapon/Weapon.h"
 #include "sim/world/World.h"
 
 namespace fs = std::filesystem;
@@ -237,6 +240,80 @@ TEST(DustClearing, ClearAlongLowersOnlyNearTheSegment) {
     EXPECT_FALSE(field.clear_along({0.0f, 10.0f, 0.0f}, {1.0f, 10.0f, 0.0f}, 0.5f));
 }
 
+TEST(DustClearing, AShotPassingCloseClearsTheTopAndTheHashShowsIt) {
+    sim::World plain(dusty_test_level()), shot(dusty_test_level());
+    const glm::vec3 spot{0.0f, 2.05f, -25.0f};
+    const float before = shot.get<sim::DustField>().amount_near(spot);
+    ASSERT_GT(before, 0.8f);
+    // Fired level along the board's length, a quarter metre over its top.
+    shot.get<sim::Weapon>().fire({-4.0f, 2.3f, -25.0f}, {1.0f, 0.0f, 0.0f});
+    for (int t = 0; t < 30; ++t) {
+        plain.step({});
+        shot.step({});
+    }
+    const sim::DustField& dust = shot.get<sim::DustField>();
+    EXPECT_LT(dust.amount_near(spot), 0.5f * before);
+    EXPECT_EQ(plain.get<sim::DustField>().amount_near(spot), before);  // nothing else moves dust
+    EXPECT_GT(dust.revision(), 0u);
+    const auto names = shot.subsystem_names();
+    const size_t i = size_t(std::find(names.begin(), names.end(), "dust") - names.begin());
+    ASSERT_LT(i, names.size());
+    EXPECT_NE(shot.hash().parts[i], plain.hash().parts[i]);
+}
+
+TEST(DustAmounts, InsideTheHarboursPipeAndBarrelLessThanOnTheirTops) {
+    const game::LoadedLevel level = game::load_level("harbour");
+    const sim::DustField field(level.sim.dust);
+    const sim::DustSurface& s = field.surface();
+    for (const char* stem : {"pipe", "barrel"}) {
+        SCOPED_TRACE(stem);
+        const sim::DustPropRange* prop = nullptr;
+        for (const sim::DustPropRange& p : s.props())
+            if (p.name.rfind(stem, 0) == 0) prop = &p;
+        ASSERT_NE(prop, nullptr);
+        // Up-facing vertices: those in the lower half lie inside the hollow (the floor
+        // of the barrel, the bottom of the pipe's bore), the others on the outside top.
+        double inside = 0.0, top = 0.0;
+        int n_inside = 0, n_top = 0;
+        for (uint32_t v = prop->first_vertex; v < prop->first_vertex + prop->vertex_count; ++v) {
+            if (s.normals()[v].y < 0.95f) continue;
+            if (s.positions()[v].y < prop->centre().y) inside += field.amounts()[v], ++n_inside;
+            else top += field.amounts()[v], ++n_top;
+        }
+        ASSERT_GT(n_inside, 5);
+        ASSERT_GT(n_top, 5);
+        inside /= n_inside;
+        top /= n_top;
+        std::printf("%s: mean amount %.3f inside (%d vertices), %.3f on top (%d)\n", stem, inside, n_inside, top, n_top);
+        EXPECT_GT(top, 0.5);
+        EXPECT_LT(inside, 0.6 * top);
+    }
+}
+
+TEST(DustLight, TheWarehouseRoofHidesTheSkyFromTheDustInside) {
+    game::LoadedLevel level = game::load_level("harbour");
+    const sim::DustField field(level.sim.dust);
+    const sim::DustSurface& s = field.surface();
+    auto nearest = [&](glm::vec3 p) {
+        size_t best = 0;
+        for (size_t v = 0; v < s.positions().size(); ++v)
+            if (glm::distance(s.positions()[v], p) < glm::distance(s.positions()[best], p)) best = v;
+        return best;
+    };
+    const size_t crate_top = nearest({-49.1f, 2.43f, -46.3f}), shelf_top = nearest({-40.0f, 2.88f, -49.35f});
+    const std::vector<float> roofed = effects::sky_exposure(s, level.scene);
+    ASSERT_EQ(roofed.size(), s.positions().size());
+    // Without the building the same tops see the open sky.
+    std::erase_if(level.scene.props, [&](const effects::PropInstance& p) { return level.scene.models[size_t(p.model)].name == "warehouse"; });
+    const std::vector<float> open = effects::sky_exposure(s, level.scene);
+    std::printf("sky exposure: crate top %.2f under the roof, %.2f without it; shelf top %.2f, %.2f\n", roofed[crate_top],
+                open[crate_top], roofed[shelf_top], open[shelf_top]);
+    EXPECT_LT(roofed[crate_top], 0.2f);
+    EXPECT_LT(roofed[shelf_top], 0.2f);
+    EXPECT_GT(open[crate_top], 0.9f);
+    EXPECT_GT(open[shelf_top], 0.9f);
+}
+
 TEST(DustBadInput, FibreImagesThatAreNotBinaryEmptyOrUnreadableAreRefused) {
     auto message = [](auto fn) {
         try {
@@ -283,7 +360,17 @@ TEST(DustBadInput, AbsurdParametersAreRefusedNamingThem) {
     EXPECT_TRUE(refused([](sim::DustDesc& d) { d.source_distance = NAN; }, "source_distance"));
     EXPECT_TRUE(refused([](sim::DustDesc& d) { d.props[0].indices.push_back(999); d.props[0].indices.push_back(0); d.props[0].indices.push_back(1); }, "test shelf"));
     EXPECT_TRUE(refused([](sim::DustDesc& d) { d.props[0].normals.pop_back(); }, "normals"));
+    // A valid table, so only the layer count can be what is refused.
+    const effects::FibreDirections lines =
+        game::fibre_directions(game::binarised_fibres(image_of(32, 32, [](int, int y) { return y % 4 == 0; }), 1, "l"), "l");
     effects::FibreGrowth g;
     g.layers = 0;
-    EXPECT_THROW(effects::grow_fibres(effects::FibreDirections{}, g), std::invalid_argument);
+    try {
+        effects::grow_fibres(lines, g);
+        ADD_FAILURE() << "layers = 0 was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("layers 1..64"), std::string::npos) << e.what();
+    }
+    g.layers = 10;
+    EXPECT_NO_THROW(effects::grow_fibres(lines, g));
 }

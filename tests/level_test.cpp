@@ -280,6 +280,37 @@ TEST(LevelLoader, OutOfRangeAndMalformedValues) {
     expect_error([&] { game::load_level((tmp.path / "huge.json").string()); }, {"huge.json: too large"});
 }
 
+TEST(LevelLoader, BadDustSectionFieldsAreNamed) {
+    TempDir tmp("dust");
+    const json base = json::parse(slurp(harbour_json()));
+    struct Case {
+        std::function<void(json&)> edit;
+        std::vector<std::string> words;
+    };
+    const std::vector<Case> cases = {
+        {[](json& j) { j["dust"]["preset"] = "snow"; }, {"dust.preset: 'snow' is not one of dust, sand, mould"}},
+        {[](json& j) { j["dust"]["sources_per_prop"] = 17; }, {"dust.sources_per_prop: expected a whole number from 1 to 16"}},
+        {[](json& j) { j["dust"]["fibre_slices"] = 0; }, {"dust.fibre_slices: expected a whole number from 1 to"}},
+        {[](json& j) { j["dust"]["source_elevation_deg"] = 95; }, {"dust.source_elevation_deg: 95 is out of range [0, 90]"}},
+        {[](json& j) { j["dust"]["sample_spacing_m"] = "fine"; }, {"dust.sample_spacing_m: expected a number"}},
+        {[](json& j) { j["dust"]["fibre_image"] = "../dust_fibres.png"; }, {"dust.fibre_image:", "without '..'"}},
+        {[](json& j) { j["dust"].erase("fibre_image"); }, {"dust: missing required key 'fibre_image'"}},
+        {[](json& j) { j["dust"]["sources"] = 5; }, {"dust.sources: unknown key"}},
+        {[](json& j) { j["props"][1]["dust"] = 3; }, {"props[1].dust: expected true, false or a preset name"}},
+        {[](json& j) { j["props"][1]["dust"] = "fur"; }, {"props[1].dust: 'fur' is not one of dust, sand, mould"}},
+    };
+    for (size_t i = 0; i < cases.size(); ++i) {
+        SCOPED_TRACE("case " + std::to_string(i));
+        json j = base;
+        cases[i].edit(j);
+        fs::path file = tmp.path / ("case" + std::to_string(i) + ".json");
+        spit(file, j.dump(1));
+        std::vector<std::string> words = cases[i].words;
+        words.push_back(file.string() + ": ");
+        expect_error([&] { game::load_level(file.string()); }, words);
+    }
+}
+
 // ---- glTF -> Model -----------------------------------------------------------------------
 
 TEST(GltfModel, GeneratedAssetsHaveTheExpectedShape) {

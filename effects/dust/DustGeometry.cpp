@@ -6,9 +6,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "effects/dust/SkyExposure.h"
+
 namespace effects {
 
-void DustGeometry::upload_static(const sim::DustField& field) {
+void DustGeometry::upload_static(const sim::DustField& field, const SceneDesc& scene) {
     const sim::DustSurface& s = field.surface();
     std::vector<float> packed;
     packed.reserve(s.positions().size() * 6);
@@ -19,6 +21,9 @@ void DustGeometry::upload_static(const sim::DustField& field) {
     vertices_ = gl::Buffer::create<float>("dust.vertices", packed, 0);
     vertex_light_ = gl::Buffer::create("dust.vertex_light",
                                        GLsizeiptr(std::max<size_t>(s.positions().size(), 1) * 2 * sizeof(float) * 4));
+    std::vector<float> sky = effects::sky_exposure(s, scene);
+    if (sky.empty()) sky.push_back(1.0f);
+    sky_exposure_ = gl::Buffer::create<float>("dust.sky_exposure", sky, 0);
     amounts_ = gl::Buffer::create("dust.amounts", GLsizeiptr(std::max<size_t>(s.positions().size(), 1) * sizeof(float)));
     shell_vao_ = gl::VertexArray::create("dust.shells");
     shell_vao_.attribute(0, 0, 3, GL_FLOAT, 0);
@@ -92,10 +97,10 @@ void DustGeometry::rebuild(const sim::DustField& field) {
     fin_vao_.element_buffer(fin_indices_);
 }
 
-void DustGeometry::update(const sim::DustField& field) {
+void DustGeometry::update(const sim::DustField& field, const SceneDesc& scene) {
     if (&field != field_) {
         field_ = &field;
-        upload_static(field);
+        upload_static(field, scene);
         revision_ = ~0ull;
     }
     if (field.revision() != revision_) {

@@ -1,12 +1,14 @@
 #pragma once
-// The dusty props' surfaces on the GPU: the sim's tessellated vertices (static), their
-// dust amounts (re-uploaded when the sim's revision changes), and, rebuilt with them,
-// the triangles that hold any dust and the fins standing on their edges.
+// The dusty props' surfaces on the GPU: the sim's tessellated vertices and how much
+// sky each sees (static), their dust amounts (re-uploaded when the sim's revision
+// changes), and, rebuilt with them, the triangles that hold any dust and the fins
+// standing on their edges.
 #include <cstdint>
 #include <vector>
 
 #include "effects/gl/Buffer.h"
 #include "effects/gl/VertexArray.h"
+#include "effects/scene/SceneDesc.h"
 #include "sim/dust/DustField.h"
 
 namespace effects {
@@ -24,10 +26,11 @@ public:
     static constexpr float kMinAmount = 0.02f;
 
     // Uploads what changed since the last call; cheap when nothing did.
-    void update(const sim::DustField& field);
+    void update(const sim::DustField& field, const SceneDesc& scene);
 
     const gl::Buffer& vertices() const { return vertices_; }  // position, normal per vertex
     const gl::Buffer& vertex_light() const { return vertex_light_; }  // two vec4 per vertex
+    const gl::Buffer& sky_exposure() const { return sky_exposure_; }  // float per vertex
     const gl::VertexArray& shells() const { return shell_vao_; }
     const gl::VertexArray& fins() const { return fin_vao_; }
     const std::vector<DustDrawRange>& ranges() const { return ranges_; }  // per sim prop
@@ -44,12 +47,12 @@ private:
         uint32_t vertex; // the dusty vertex it stands on (for its light)
     };
 
-    void upload_static(const sim::DustField& field);
+    void upload_static(const sim::DustField& field, const SceneDesc& scene);
     void rebuild(const sim::DustField& field);
 
     const sim::DustField* field_ = nullptr;
     uint64_t revision_ = ~0ull;
-    gl::Buffer vertices_, vertex_light_, amounts_, shell_indices_, fin_vertices_, fin_indices_;
+    gl::Buffer vertices_, vertex_light_, sky_exposure_, amounts_, shell_indices_, fin_vertices_, fin_indices_;
     gl::VertexArray shell_vao_, fin_vao_;
     std::vector<DustDrawRange> ranges_;
     std::vector<uint32_t> scratch_indices_, scratch_fin_indices_;

@@ -5,12 +5,12 @@ namespace effects {
 DustLook dust_look(sim::DustKind kind) {
     DustLook look;
     switch (kind) {
-        case sim::DustKind::Dust:  // long grey fibres lying in a felt, a few climbing
-            look.colour = {0.56f, 0.46f, 0.34f};
-            look.deep_colour = {0.30f, 0.25f, 0.19f};
-            look.height_m = 0.022f;
-            look.tile_m = 0.45f;
-            look.growth = {.fibres = 700, .steps = 70, .bend_probability = 0.05f, .direction_bias = 5.0f, .climb = 0.2f};
+        case sim::DustKind::Dust:  // short grey lint lying in a felt, a few fibres climbing
+            look.colour = {0.62f, 0.59f, 0.54f};
+            look.deep_colour = {0.34f, 0.32f, 0.29f};
+            look.height_m = 0.018f;
+            look.tile_m = 0.25f;  // 2 mm texels: a fibre of 30 steps spans at most 6 cm
+            look.growth = {.fibres = 1600, .steps = 30, .bend_probability = 0.08f, .direction_bias = 4.0f, .climb = 0.2f};
             break;
         case sim::DustKind::Sand:  // grains: short walks that curl up into blobs
             look.colour = {0.60f, 0.49f, 0.32f};

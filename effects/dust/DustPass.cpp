@@ -60,7 +60,7 @@ const FibreTexture& DustPass::fibres_for(sim::DustKind kind, const FibreDirectio
 void DustPass::render(const FrameContext& frame) {
     const sim::DustField* field = frame.world.find<sim::DustField>();
     if (!field || field->surface().props().empty()) return;
-    geometry_.update(*field);
+    geometry_.update(*field, frame.scene.desc);
     if (geometry_.dusty_triangles() == 0) return;
 
     const SceneTargets& t = frame.scene.targets;
@@ -84,6 +84,7 @@ void DustPass::render(const FrameContext& frame) {
     light_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, geometry_.vertices().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, geometry_.vertex_light().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, geometry_.sky_exposure().id());
     for (size_t i = 0; i < props.size(); ++i) {
         const float pad = dust_look(props[i].kind).height_m;
         visible[i] = geometry_.ranges()[i].shell_index_count > 0 &&

@@ -171,6 +171,7 @@ int bench_command(const std::vector<std::string>& argv) {
     if (runs("dust")) {
         bench_dust_render(report, 640, 360, quick);
         bench_dust_render(report, 1280, 720, quick);
+        bench_dust_render(report, 1280, 720, quick, DustBenchView::CloseUp);
     }
     report.add({"memory", "peak resident after 1280x720 frames", peak_resident_mib(), "MiB", 1024.0});
 

@@ -10,6 +10,7 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = 0) readonly buffer Vertices { float vertices[]; };  // position, normal
 layout(std430, binding = 1) writeonly buffer VertexLight { vec4 vertex_light[]; };  // light, fog
+layout(std430, binding = 2) readonly buffer SkyExposure { float sky_exposure[]; };
 
 uniform uint u_first;
 uniform uint u_count;
@@ -21,7 +22,7 @@ void main() {
     vec3 n = normalize(vec3(vertices[6 * k + 3], vertices[6 * k + 4], vertices[6 * k + 5]));
     vec3 light;
     vec4 fog;
-    light_vertex(p, n, light, fog);
+    light_vertex(p, n, sky_exposure[k], light, fog);
     vertex_light[2 * k] = vec4(light, 1.0);
     vertex_light[2 * k + 1] = fog;
 }
