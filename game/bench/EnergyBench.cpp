@@ -223,8 +223,8 @@ void bench_full_screen(BenchReport& report, bool quick) {
         return seconds_since(start) * 1e3 / frames;
     };
     const double glow_ms = time_pass(0.0f);
+    const size_t tiles = pass.tiles().tiles.size();  // the bloom's quarter-resolution draw bins its own
     const double pass_ms = time_pass(effects::EnergyLook{}.bloom);
-    const size_t tiles = pass.tiles().tiles.size();
 
     // The trivial fill: one full-screen triangle adding a constant to the same colour target.
     const effects::gl::Program fill = effects::gl::Program::from_sources(
