@@ -182,8 +182,9 @@ TEST_F(EnergyRenderTest, NoNanOrInfForAnyRay) {
 
 // Rays from 1e-6 to 1e-2 rad off the degenerate ones: along the axis through M, across
 // it through M, parallel to it, and along it from inside the beam. Every one is finite
-// in the closed form, the glow and ray marching; the closed form matches the
-// quadrature wherever the ray keeps clear of the clamped core around the axis.
+// in the closed form, the glow and ray marching, and the closed form matches the
+// quadrature, the rays through the clamped core around the axis included (the
+// quadrature integrates the same clamped density).
 TEST_F(EnergyRenderTest, NearDegenerateRaysStayFiniteAndExact) {
     effects::EnergyProbe probe(1, 1);  // the one pixel's ray is the view direction
     const glm::dvec3 z(0, 0, -1), x(-1, 0, 0);
@@ -199,7 +200,7 @@ TEST_F(EnergyRenderTest, NearDegenerateRaysStayFiniteAndExact) {
         {"along the axis inside the beam", segment({0, 0, 2}, {0, 0, -1}, 6.0f, 0.12f, 1.6f), z, {1, 0, 0}, {0, 1, 0}},
     };
     const std::vector<glm::vec4> black(1, glm::vec4(0.0f));
-    int compared = 0, rays = 0;
+    int near_core = 0, rays = 0;
     double worst = 0.0;
     for (const Family& f : families)
         for (int k = 0; k <= 8; ++k) {
@@ -225,16 +226,16 @@ TEST_F(EnergyRenderTest, NearDegenerateRaysStayFiniteAndExact) {
                 const glm::vec4 h = probe.read()[0];
                 ASSERT_TRUE(std::isfinite(h.x) && h.x > 0.0f) << "closed form: " << h.x;
                 const glm::dvec3 q = ray_direction(cam, 0, 0, 1, 1);
-                if (sim::energy_singular_distance(segs, glm::dvec3(0.0), q, h.y) < 2.0 * sim::kEnergyCore_m) continue;
-                ++compared;
+                if (sim::energy_singular_distance(segs, glm::dvec3(0.0), q, h.y) < 2.0 * sim::kEnergyCore_m) ++near_core;
                 const double ref = sim::energy_along_ray(segs, glm::dvec3(0.0), q, h.y);
                 const double rel = std::fabs(double(h.x) - ref) / ref;
                 worst = std::max(worst, rel);
                 EXPECT_LT(rel, 1e-3) << "shader " << h.x << ", quadrature " << ref;
             }
         }
-    EXPECT_GE(compared, 30);  // all parallel rays, and the most tilted ones along the axis
-    std::printf("near-degenerate rays: %d swept, %d compared, worst relative error %.3g\n", rays, compared, worst);
+    EXPECT_GE(near_core, 70);  // most rays pass within two core radii of M or the axis
+    std::printf("near-degenerate rays: %d swept, %d of them within %.2f m of the axis, worst relative error %.3g\n",
+                rays, near_core, 2.0 * sim::kEnergyCore_m, worst);
 }
 
 // The seed's figures 4.8-4.13: one camera, a wall over the right half of the view
