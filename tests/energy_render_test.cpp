@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -179,6 +180,64 @@ TEST_F(EnergyRenderTest, NoNanOrInfForAnyRay) {
     EXPECT_NEAR(centre.x / ref, 1.0, 1e-3);
 }
 
+// Rays from 1e-6 to 1e-2 rad off the degenerate ones: along the axis through M, across
+// it through M, parallel to it, and along it from inside the beam. Every one is finite
+// in the closed form, the glow and ray marching, and the closed form matches the
+// quadrature, the rays through the clamped core around the axis included (the
+// quadrature integrates the same clamped density).
+TEST_F(EnergyRenderTest, NearDegenerateRaysStayFiniteAndExact) {
+    effects::EnergyProbe probe(1, 1);  // the one pixel's ray is the view direction
+    const glm::dvec3 z(0, 0, -1), x(-1, 0, 0);
+    struct Family {
+        const char* name;
+        EnergySegment seg;
+        glm::dvec3 axis, side_a, side_b;  // the degenerate direction and two normals to tilt it by
+    };
+    const std::vector<Family> families = {
+        {"along the axis through M", segment({0, 0, -5}, {0, 0, -1}, 6.0f, 0.12f, 1.6f), z, {1, 0, 0}, {0, 1, 0}},
+        {"across the axis through M", segment({-3, 0, 0}, {0, 0, -1}, 6.0f, 0.12f, 1.6f), x, {0, 0, 1}, {0, 1, 0}},
+        {"parallel to the axis", segment({0.5f, 0, -2}, {0, 0, -1}, 6.0f, 0.12f, 1.6f), z, {1, 0, 0}, {0, 1, 0}},
+        {"along the axis inside the beam", segment({0, 0, 2}, {0, 0, -1}, 6.0f, 0.12f, 1.6f), z, {1, 0, 0}, {0, 1, 0}},
+    };
+    const std::vector<glm::vec4> black(1, glm::vec4(0.0f));
+    int near_core = 0, rays = 0;
+    double worst = 0.0;
+    for (const Family& f : families)
+        for (int k = 0; k <= 8; ++k) {
+            const double angle = 1e-6 * std::pow(10.0, 0.5 * k);
+            for (double azimuth : {0.0, 2.0, 4.0}) {
+                SCOPED_TRACE(std::string(f.name) + ", " + std::to_string(angle) + " rad, azimuth " +
+                             std::to_string(azimuth));
+                const glm::dvec3 tilt = std::cos(azimuth) * f.side_a + std::sin(azimuth) * f.side_b;
+                const glm::dvec3 dir = std::cos(angle) * f.axis + std::sin(angle) * tilt;
+                // Eye at the origin, target one metre away: the direction survives rounding to float.
+                const effects::Camera cam = look({0, 0, 0}, glm::vec3(dir), 1, 1);
+                const std::vector<EnergySegment> segs = {f.seg};
+                ++rays;
+                pass.method().march_samples = 120;
+                probe.draw_energy(pass, cam, segs);
+                const glm::vec4 marched = probe.read()[0];
+                ASSERT_TRUE(std::isfinite(marched.x) && marched.x > 0.0f) << "ray marching: " << marched.x;
+                pass.method().march_samples = 0;
+                probe.draw_glow(pass, cam, segs, black);
+                const glm::vec4 glow = probe.read()[0];
+                for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(glow[c]) && glow[c] > 0.0f) << "glow: " << glow[c];
+                probe.draw_energy(pass, cam, segs);
+                const glm::vec4 h = probe.read()[0];
+                ASSERT_TRUE(std::isfinite(h.x) && h.x > 0.0f) << "closed form: " << h.x;
+                const glm::dvec3 q = ray_direction(cam, 0, 0, 1, 1);
+                if (sim::energy_singular_distance(segs, glm::dvec3(0.0), q, h.y) < 2.0 * sim::kEnergyCore_m) ++near_core;
+                const double ref = sim::energy_along_ray(segs, glm::dvec3(0.0), q, h.y);
+                const double rel = std::fabs(double(h.x) - ref) / ref;
+                worst = std::max(worst, rel);
+                EXPECT_LT(rel, 1e-3) << "shader " << h.x << ", quadrature " << ref;
+            }
+        }
+    EXPECT_GE(near_core, 70);  // most rays pass within two core radii of M or the axis
+    std::printf("near-degenerate rays: %d swept, %d of them within %.2f m of the axis, worst relative error %.3g\n",
+                rays, near_core, 2.0 * sim::kEnergyCore_m, worst);
+}
+
 // The seed's figures 4.8-4.13: one camera, a wall over the right half of the view
 // (z = -20 where x > 0), and the beam moved through every ordering.
 struct Ordering {
@@ -196,9 +255,11 @@ std::vector<Ordering> orderings() {
         {"1_camera_beam_wall", beam_across(-10.0f)},
         {"2_beam_through_wall", beam_across(-20.0f)},
         {"3_camera_wall_beam", beam_across(-30.0f)},
-        {"4_camera_inside_beam", {segment({0.3f, -0.2f, 4}, {0, 0, -1}, 12.0f, 0.12f, 1.6f)}},
+        // From behind the camera, on through the wall (z = -20) just right of the centre.
+        {"4_camera_inside_beam", {segment({0.3f, -0.2f, 4}, {0, 0, -1}, 30.0f, 0.12f, 1.6f)}},
         {"5_beam_behind_camera", beam_across(10.0f)},
-        {"6_beam_through_camera_plane", {segment({-2, -0.5f, 6}, {0, 0, -1}, 12.0f, 0.12f, 1.6f)}},
+        // From beside and behind the camera, across the view (x = 0 at z = -9), into the wall.
+        {"6_beam_through_camera_plane", {segment({-3, -0.5f, 6}, {0.2f, 0, -1}, 36.0f, 0.12f, 1.6f)}},
     };
 }
 
@@ -233,7 +294,8 @@ TEST_F(EnergyRenderTest, SixOrderingsOfCameraBeamAndGeometry) {
         probe.set_depth(depth);
         probe.draw_energy(pass, cam, o.segs);
         const std::vector<glm::vec4> energy = probe.read();
-        double left = 0.0, right = 0.0, right_free = 0.0, least = 1e30, worst_unhidden = 0.0;
+        double left = 0.0, right = 0.0, right_free = 0.0, least = 1e30, worst_unhidden = 0.0, worst_left = 0.0;
+        double most_hidden = 0.0;  // the largest fraction of a ray's H that the wall takes away
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {
                 const float e = energy[size_t(y) * W + x].x, f = free[size_t(y) * W + x].x;
@@ -241,7 +303,11 @@ TEST_F(EnergyRenderTest, SixOrderingsOfCameraBeamAndGeometry) {
                 (x < W / 2 ? left : right) += e;
                 if (x >= W / 2) right_free += f;
                 least = std::min(least, double(e));
-                worst_unhidden = std::max(worst_unhidden, double(std::fabs(e - f)) / std::max(double(f), 1e-3));
+                const double change = double(std::fabs(e - f)) / std::max(double(f), 1e-3);
+                worst_unhidden = std::max(worst_unhidden, change);
+                if (x < W / 2) worst_left = std::max(worst_left, change);  // no wall on the left half
+                if (f > 1e-3f) most_hidden = std::max(most_hidden, double(f - e) / double(f));
+                ASSERT_LE(e, f * (1.0f + 1e-5f) + 1e-6f) << x << "," << y;  // a wall only takes away
             }
         const std::string name = o.name;
         if (name == "1_camera_beam_wall") {
@@ -256,12 +322,23 @@ TEST_F(EnergyRenderTest, SixOrderingsOfCameraBeamAndGeometry) {
             EXPECT_EQ(right, 0.0);  // wholly behind the wall
         } else if (name == "4_camera_inside_beam") {
             EXPECT_GT(least, 0.0);  // every ray starts inside the field
+            EXPECT_GT(left, 1.0);
+            // The rays along the beam lose its last 6 m behind the wall; the rest are untouched.
+            EXPECT_LT(right, right_free);
+            EXPECT_GT(most_hidden, 0.25);
+            EXPECT_GT(right, 0.9 * right_free);
+            EXPECT_LT(worst_left, 1e-5);
         } else if (name == "5_beam_behind_camera") {
             EXPECT_EQ(left + right, 0.0);
         } else if (name == "6_beam_through_camera_plane") {
             EXPECT_GT(left, 1.0);
-            EXPECT_EQ(right, 0.0);
+            EXPECT_LT(right, 0.9 * right_free);  // the part past z = -20 is behind the wall
+            EXPECT_GT(most_hidden, 0.5);
+            EXPECT_GT(right, 0.5 * right_free);  // the part from x = 0 to the wall shows
+            EXPECT_LT(worst_left, 1e-5);
         }
+        std::printf("ordering %s: H left %.2f, right %.2f of %.2f without the wall, most hidden %.3f\n", o.name, left,
+                    right, right_free, most_hidden);
 
         // The frame: the glow over the background, tone mapped as x / (1 + x) in sRGB-ish gamma.
         probe.draw_glow(pass, cam, o.segs, background);
@@ -339,6 +416,65 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     std::printf("line light: ground under the beam x%.2f, far corners x%.4f\n", near_gain, far_gain);
 }
 
+// The same over the sea: the water's shading takes the line lights too, so the sea
+// under a shot brightens and the sea far from it does not.
+TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
+    constexpr int W = 160, H = 100;
+    sim::World world(make_test_level());  // no wave grid: the water pass draws a flat sea at 0
+    effects::SceneDesc desc;
+    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
+                                  effects::SceneTargets{}};
+    scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
+    scene.lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    scene.targets.resize(W, H);
+    sim::CameraView view;
+    view.eye = {60.0f, 14.0f, 30.0f};
+    view.target = {60.0f, 0.0f, 46.0f};
+    const effects::Camera cam = effects::make_camera(view, float(W) / float(H));
+    effects::EnvironmentPass environment;
+    effects::ShadowPass shadow;
+    effects::EnergyLightPass lights;
+    effects::OpaquePass opaque;
+    effects::SceneCopyPass copy;
+    effects::WaterPass water;
+    auto render = [&]() {
+        effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
+        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &lights, &opaque, &copy, &water})
+            p->render(frame);
+        return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+    };
+    const game::ImageRGBA32F dark = render();
+    // A shot 2 m over the sea, across the view.
+    world.get<sim::Weapon>().fire({52.0f, 2.0f, 46.0f}, {1.0f, 0.0f, 0.0f});
+    for (int t = 0; t < 12; ++t) world.step({});
+    ASSERT_EQ(world.get<sim::Weapon>().shots().size(), 1u);
+    ASSERT_FALSE(world.get<sim::Weapon>().shots()[0].hit());
+    const game::ImageRGBA32F lit = render();
+    auto luma = [&](const game::ImageRGBA32F& img, int x, int y) {
+        const float* p = &img.pixels[(size_t(y) * W + size_t(x)) * 4];
+        return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+    };
+    float near_gain = 0.0f, far_gain = 0.0f;
+    for (int y = H / 2 - 5; y < H / 2 + 5; ++y)
+        for (int x = W / 2 - 5; x < W / 2 + 5; ++x) near_gain = std::max(near_gain, luma(lit, x, y) / luma(dark, x, y));
+    for (int y : {2, H - 3})
+        for (int x : {2, W - 3}) far_gain = std::max(far_gain, luma(lit, x, y) / luma(dark, x, y));
+    EXPECT_GT(near_gain, 1.3f);
+    EXPECT_LT(far_gain, 1.001f);
+    std::printf("line light: sea under the beam x%.2f, far corners x%.4f\n", near_gain, far_gain);
+    if (const char* png_dir = std::getenv("SPINDRIFT_ENERGY_PNG_DIR")) {
+        for (const auto& [name, img] : {std::pair{"sea_dark.png", &dark}, std::pair{"sea_lit.png", &lit}}) {
+            game::ImageRGBA8 out{W, H, std::vector<uint8_t>(size_t(W) * H * 4, 255)};
+            for (size_t i = 0; i < size_t(W) * H; ++i)
+                for (size_t k = 0; k < 3; ++k) {
+                    const double c = img->pixels[i * 4 + k];
+                    out.pixels[i * 4 + k] = uint8_t(std::lround(255.0 * std::pow(c / (1.0 + c), 1.0 / 2.2)));
+                }
+            game::write_png(std::filesystem::path(png_dir) / name, out);
+        }
+    }
+}
+
 // The pass in the frame: the glow lands in the scene colour where the beam is, and the
 // bloom spreads some of it beyond the field's reach, only near the beam.
 TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
@@ -360,13 +496,14 @@ TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
         return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
     };
     const game::ImageRGBA32F plain = frame_with(0.0f), bloomed = frame_with(0.5f);
-    auto red = [&](const game::ImageRGBA32F& img, int x, int y) { return img.pixels[(size_t(y) * W + size_t(x)) * 4]; };
+    // Blue: the glow colour's strongest channel.
+    auto blue = [&](const game::ImageRGBA32F& img, int x, int y) { return img.pixels[(size_t(y) * W + size_t(x)) * 4 + 2]; };
     // The beam crosses the middle row; the field reaches 1.1 m (about 6 px) above it.
-    EXPECT_GT(red(plain, W / 2, H / 2), 0.5f);
-    EXPECT_EQ(red(plain, W / 2, H / 2 - 12), 0.0f);
-    EXPECT_GT(red(bloomed, W / 2, H / 2 - 12), 0.0f);             // bled beyond the field
-    EXPECT_GT(red(bloomed, W / 2, H / 2), red(plain, W / 2, H / 2));
-    EXPECT_EQ(red(bloomed, W / 2, 2), 0.0f);                      // and not far away
+    EXPECT_GT(blue(plain, W / 2, H / 2), 0.5f);
+    EXPECT_EQ(blue(plain, W / 2, H / 2 - 12), 0.0f);
+    EXPECT_GT(blue(bloomed, W / 2, H / 2 - 12), 0.0f);             // bled beyond the field
+    EXPECT_GT(blue(bloomed, W / 2, H / 2), blue(plain, W / 2, H / 2));
+    EXPECT_EQ(blue(bloomed, W / 2, 2), 0.0f);                      // and not far away
     for (float v : bloomed.pixels) ASSERT_TRUE(std::isfinite(v));
     pass.look().bloom = effects::EnergyLook{}.bloom;
 }

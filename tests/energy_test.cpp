@@ -1,6 +1,7 @@
 // sim/weapon: shots grow from a ball into a beam and fly, stop and drain where they
 // hit the ground or the water, report water impacts for the wave grid to splash, and
 // hash the same for any thread count.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -66,6 +67,81 @@ TEST(EnergyWeapon, ShotStartsAsABallAndStretchesIntoAMovingBeam) {
     }
     for (int t = 0; t < 150; ++t) h.world.step({});
     EXPECT_TRUE(weapon.shots().empty());  // 2.5 s life
+}
+
+// How far the chain's inner joints stand off the straight line from its tail to its head.
+float sway_of(const sim::Shot& s) {
+    const glm::vec3 tail = s.segments.front().start, axis = glm::normalize(head_of(s) - tail);
+    float most = 0.0f;
+    for (size_t i = 1; i < s.segments.size(); ++i) {
+        const glm::vec3 v = s.segments[i].start - tail;
+        most = std::max(most, glm::length(v - glm::dot(v, axis) * axis));
+    }
+    return most;
+}
+
+TEST(EnergyWeapon, TwoShotsFlyAtOnceEachAsIfAlone) {
+    Harbour both, alone;
+    // Level flight high over the sea, one along x and one along z, fired 10 ticks apart.
+    both.weapon().fire({40.0f, 9.0f, 40.0f}, {1.0f, 0.0f, 0.0f});
+    alone.weapon().fire({40.0f, 9.0f, 40.0f}, {1.0f, 0.0f, 0.0f});
+    for (int t = 0; t < 10; ++t) {
+        both.world.step({});
+        alone.world.step({});
+    }
+    both.weapon().fire({20.0f, 7.0f, 20.0f}, {0.0f, 0.0f, 1.0f});
+    for (int t = 0; t < 40; ++t) {
+        both.world.step({});
+        alone.world.step({});
+    }
+    const std::vector<sim::Shot>& shots = both.weapon().shots();
+    ASSERT_EQ(shots.size(), 2u);
+    EXPECT_EQ(shots[0].age_ticks, 50u);
+    EXPECT_EQ(shots[1].age_ticks, 40u);
+    EXPECT_FALSE(shots[0].hit() || shots[1].hit());
+    EXPECT_GT(head_of(shots[0]).x - 40.0f, 30.0f);  // 45 m/s for 50 ticks
+    EXPECT_GT(head_of(shots[1]).z - 20.0f, 25.0f);  // for 40 ticks
+    EXPECT_NEAR(head_of(shots[1]).x, 20.0f, 1.0f);  // each on its own line
+    // The first shot is where it would be without the second: shots do not interact.
+    ASSERT_EQ(alone.weapon().shots().size(), 1u);
+    for (size_t i = 0; i < shots[0].segments.size(); ++i) {
+        EXPECT_EQ(shots[0].segments[i].start, alone.weapon().shots()[0].segments[i].start);
+        EXPECT_EQ(shots[0].segments[i].beam_strength, alone.weapon().shots()[0].segments[i].beam_strength);
+    }
+    EXPECT_NE(both.world.hash().world, alone.world.hash().world);
+}
+
+TEST(EnergyWeapon, GrownBeamSwaysOffItsLineAndFadesBeforeItsEnd) {
+    Harbour h;
+    sim::Weapon& weapon = h.weapon();
+    const sim::WeaponParams& p = weapon.params();
+    weapon.fire({40.0f, 9.0f, 60.0f}, {1.0f, 0.0f, 0.0f});
+    const int life_ticks = int(p.life_s * 60.0f + 0.5f), fade_start = int((p.life_s - p.fade_s) * 60.0f);
+    float last_strength = p.strength;
+    int faded_ticks = 0;
+    for (int t = 1; t < life_ticks; ++t) {
+        h.world.step({});
+        ASSERT_EQ(weapon.shots().size(), 1u) << "tick " << t;
+        const sim::Shot& s = weapon.shots()[0];
+        ASSERT_FALSE(s.hit());
+        const float strength = s.segments[0].beam_strength;
+        if (t >= 45 && t < fade_start) {  // grown, in mid-flight
+            // The three inner joints sway out of phase: some joint is always well off the line.
+            EXPECT_GT(sway_of(s), 0.5f * p.sway_m) << "tick " << t;
+            EXPECT_LE(sway_of(s), 1.2f * p.sway_m) << "tick " << t;
+            EXPECT_EQ(strength, p.strength);
+        }
+        if (t > fade_start + 1) {
+            EXPECT_LT(strength, last_strength) << "tick " << t;  // drops every tick of the fade
+            EXPECT_GT(strength, 0.0f);
+            ++faded_ticks;
+        }
+        last_strength = strength;
+    }
+    EXPECT_GT(faded_ticks, 30);
+    EXPECT_LT(last_strength, 0.05f * p.strength);  // nearly dark on its last tick
+    h.world.step({});
+    EXPECT_TRUE(weapon.shots().empty());
 }
 
 TEST(EnergyWeapon, ShotIntoTheWaterStopsThereAndRaisesASplash) {

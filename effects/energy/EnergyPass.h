@@ -20,9 +20,9 @@ namespace effects {
 
 // The tweakable look, registered with the debug panel under "energy".
 struct EnergyLook {
-    float saturation = 3.0f;                   // k of 1 - exp(-k H)
-    float intensity = 3.0f;                    // HDR radiance where the glow saturates
-    glm::vec3 glow_colour{0.25f, 0.6f, 1.0f};  // the falloff's colour; the core goes white
+    float saturation = 2.0f;                   // k of 1 - exp(-k H)
+    float intensity = 2.5f;                    // HDR radiance where the glow saturates
+    glm::vec3 glow_colour{0.1f, 0.4f, 1.0f};   // the falloff's colour; the core goes white
     float max_distance_m = 2000.0f;            // how far rays into the sky integrate
     float bloom = 0.5f;                        // strength of the blurred glow added on top
 };

@@ -69,8 +69,10 @@ void main() {
         o_colour = vec4(H, s_end, 0.0, 1.0);
         return;
     }
-    // Smooth saturation instead of the seed's clamp; white where it saturates.
+    // Smooth saturation instead of the seed's clamp. The falloff stays the glow colour
+    // and only the nearly saturated core goes white: a beam seen from the side is blue
+    // around a thin white line, a ball or a beam seen end-on is white in the middle.
     float glow = 1.0 - exp(-u_saturation * H);
-    vec3 colour = mix(u_glow_colour * glow, vec3(1.0), smoothstep(0.75, 1.0, glow));
+    vec3 colour = mix(u_glow_colour, vec3(1.0), smoothstep(0.7, 1.0, glow));
     o_colour = vec4(colour * u_intensity * glow, 0.0);
 }

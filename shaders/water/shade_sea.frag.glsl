@@ -18,7 +18,7 @@ vec3 shade_sea(vec3 pos, vec3 n, vec3 v, float sun, float crest) {
     vec3 reflection = water_reflection(n, v, sun, 0.08);
     float path;
     vec3 refraction = water_refraction(n, pos, path);
-    vec3 c = mix(refraction, reflection, fresnel);
+    vec3 c = mix(refraction, reflection, fresnel) + water_line_light(pos, n, fresnel);
     // Foam on crests and in shallow water, broken up by noise that drifts slowly so it
     // reads as patches, not paint. Most of the sea has none: skip the noise there.
     float shallow = u_shore_foam * (1.0 - smoothstep(0.05, 0.35, path));

@@ -40,6 +40,14 @@ vec3 foam_radiance(vec3 n, float sun) {
     return 0.85 * (direct + ambient);
 }
 
+// The energy beams' line lights (common/lighting.glsl) as the sea returns them: the
+// part the surface lets in, scattered back out by the water just under it, so the sea
+// glows under a passing shot.
+const vec3 kWaterScatterAlbedo = vec3(0.12, 0.3, 0.35);
+vec3 water_line_light(vec3 pos, vec3 n, float fresnel) {
+    return (1.0 - fresnel) * kWaterScatterAlbedo / 3.14159265 * line_light_irradiance(pos, n);
+}
+
 // What lies behind the surface at this pixel, seen through it: the scene copy sampled
 // a little off by the normal's tilt, its light absorbed over `path` metres of water.
 // An offset sample that lies in front of the surface is not refracted.
