@@ -12,8 +12,8 @@
 // Deviation from the seed: its five-step compression (V0 = 0.5 .. 0.9, k = 0.3) stops
 // the spikes of its height N - T at merged drops; this height has none, and the
 // compression only flattens merged drops away from the 3D reference (2.9 -> 5.5 degrees,
-// tests/rain_render_test.cpp). It stays available (HeightCompression::steps = 5, "rain"
-// in the debug panel) but is off by default.
+// tests/rain_render_test.cpp). It stays available (HeightCompression::steps = 5; "height
+// compression steps" under "rain" in the debug panel) but is off by default.
 #include <span>
 
 #include <glm/vec2.hpp>
