@@ -67,17 +67,46 @@ TEST_F(RainRenderTest, ALoneDropIsAHemisphereOfItsRadius) {
     effects::DropHeightMap map(512, 256);
     map.update(std::span(&drop, 1), glass, 1.0f);
     const std::vector<effects::SurfaceSample> s = read_surface(map);
-    const auto at = [&](float u_m, float v_m) { return s[size_t(v_m / glass.y * 256.0f) * 512 + size_t(u_m / glass.x * 512.0f)]; };
-    EXPECT_NEAR(at(0.032f, 0.016f).height_mm, 4.0f, 0.1f);
-    EXPECT_GT(at(0.032f + 0.95f * r, 0.016f).height_mm, 0.0f);  // wet out to the radius...
-    EXPECT_EQ(at(0.032f + 1.1f * r, 0.016f).height_mm, 0.0f);   // ...and dry beyond
+    const auto at = [&](const std::vector<effects::SurfaceSample>& m, float u_m, float v_m) {
+        return m[size_t(v_m / glass.y * 256.0f) * 512 + size_t(u_m / glass.x * 512.0f)];
+    };
+    EXPECT_NEAR(at(s, 0.032f, 0.016f).height_mm, 4.0f, 0.1f);
+    EXPECT_NEAR(at(s, 0.032f + 0.6f * r, 0.016f).height_mm, 3.2f, 0.1f);  // sqrt(1 - 0.6^2) R
+    EXPECT_GT(at(s, 0.032f + 0.95f * r, 0.016f).height_mm, 0.0f);          // wet out to the radius...
+    EXPECT_EQ(at(s, 0.032f + 1.1f * r, 0.016f).height_mm, 0.0f);           // ...and dry beyond
     // Normals lean outwards, symmetric left and right.
-    EXPECT_GT(at(0.032f + 0.6f * r, 0.016f).normal.x, 0.3f);
-    EXPECT_LT(at(0.032f - 0.6f * r, 0.016f).normal.x, -0.3f);
-    EXPECT_GT(at(0.032f, 0.016f + 0.6f * r).normal.y, 0.3f);
+    EXPECT_GT(at(s, 0.032f + 0.6f * r, 0.016f).normal.x, 0.3f);
+    EXPECT_LT(at(s, 0.032f - 0.6f * r, 0.016f).normal.x, -0.3f);
+    EXPECT_GT(at(s, 0.032f, 0.016f + 0.6f * r).normal.y, 0.3f);
+    // The seed's compression acts on densities above 1, which a lone drop never reaches.
+    effects::HeightCompression seed;
+    seed.steps = 5;
+    map.update(std::span(&drop, 1), glass, 1.0f, seed);
+    const std::vector<effects::SurfaceSample> c = read_surface(map);
+    EXPECT_NEAR(at(c, 0.032f, 0.016f).height_mm, at(s, 0.032f, 0.016f).height_mm, 0.01f);
 }
 
-TEST_F(RainRenderTest, CompressedTwoDMetaballsFollowTheThreeDReference) {
+TEST_F(RainRenderTest, TwoEqualDropsMeetAtTheReferencesHeight) {
+    const glm::vec2 glass(0.064f, 0.032f);
+    const float r = 0.004f;
+    const effects::RainMetaball drops[2] = {{{0.0284f, 0.016f}, r, 0.0f}, {{0.0356f, 0.016f}, r, 0.0f}};  // 1.8 R apart
+    effects::DropHeightMap map(512, 256);
+    map.update(drops, glass, 1.0f);
+    const std::vector<effects::SurfaceSample> fast = read_surface(map);
+    const std::vector<effects::SurfaceSample> slow = effects::reference_surface(drops, glass, 512, 256);
+    // Exact where they meet (to the height map's half floats)...
+    const size_t mid = 128 * 512 + 256;
+    ASSERT_GT(slow[mid].height_mm, 0.0f);
+    EXPECT_NEAR(fast[mid].height_mm, slow[mid].height_mm, 0.01f * slow[mid].height_mm);
+    // ...and close along the line through both centres (4% off measured).
+    for (float u = 0.026f; u <= 0.038f; u += 0.001f) {
+        const size_t k = 128 * 512 + size_t(u / glass.x * 512.0f);
+        ASSERT_GT(slow[k].height_mm, 0.0f) << u;
+        EXPECT_NEAR(fast[k].height_mm, slow[k].height_mm, 0.06f * slow[k].height_mm) << "at u = " << u;
+    }
+}
+
+TEST_F(RainRenderTest, TwoDMetaballsFollowTheThreeDReference) {
     glm::vec2 size;
     const std::vector<effects::RainMetaball> scene = effects::merged_drop_scene(size);
     effects::DropHeightMap map(256, 128);
@@ -87,20 +116,31 @@ TEST_F(RainRenderTest, CompressedTwoDMetaballsFollowTheThreeDReference) {
     size_t wet = 0;
     const double angle = effects::mean_normal_angle_deg(fast, slow, wet);
     EXPECT_GT(wet, 1500u);
-    EXPECT_LT(angle, 6.5);  // 5.9 measured; the 5 degree target is not met (see README)
-    // Without the compression merged drops spike: the error more than doubles.
-    effects::HeightCompression none;
-    none.steps = 0;
-    map.update(scene, size, 1.0f, none);
-    const double uncompressed = effects::mean_normal_angle_deg(read_surface(map), slow, wet);
-    EXPECT_GT(uncompressed, 2.0 * angle);
+    EXPECT_LT(angle, 5.0);  // 2.9 measured
+    // The seed's five-step compression (kept, off by default) was made for its N - T
+    // height; on this one it flattens merged drops away from the reference.
+    effects::HeightCompression seed;
+    seed.steps = 5;
+    map.update(scene, size, 1.0f, seed);
+    const std::vector<effects::SurfaceSample> compressed = read_surface(map);
+    const double compressed_angle = effects::mean_normal_angle_deg(compressed, slow, wet);
+    EXPECT_GT(compressed_angle, angle + 1.0);  // 5.5 measured
+    float peak = 0.0f, compressed_peak = 0.0f;
+    size_t higher = 0;
+    for (size_t k = 0; k < fast.size(); ++k) {
+        peak = std::max(peak, fast[k].height_mm);
+        compressed_peak = std::max(compressed_peak, compressed[k].height_mm);
+        higher += compressed[k].height_mm > fast[k].height_mm + 0.01f;
+    }
+    EXPECT_LT(compressed_peak, peak - 0.1f);  // 6.0 against 6.2 mm measured
+    EXPECT_EQ(higher, 0u) << "the compression only ever lowers the water";
     // The wet areas agree: both see the same drops.
     size_t wet_fast = 0, wet_slow = 0;
     for (size_t k = 0; k < fast.size(); ++k) {
         wet_fast += fast[k].height_mm > 0.0f;
         wet_slow += slow[k].height_mm > 0.0f;
     }
-    EXPECT_NEAR(double(wet_fast), double(wet_slow), 0.1 * double(wet_slow));
+    EXPECT_NEAR(double(wet_fast), double(wet_slow), 0.05 * double(wet_slow));
 }
 
 // The harbour car parked in the driver's view, `taps` presses of rain_up, for `ticks`.

@@ -8,7 +8,6 @@ namespace effects {
 
 namespace {
 constexpr int kProfileTexels = 256;
-constexpr float kProfileReach = 2.5f;  // in radii: N(2.5R) = 1/40, well under T
 }  // namespace
 
 DropHeightMap::DropHeightMap(int width, int height)
@@ -17,10 +16,10 @@ DropHeightMap::DropHeightMap(int width, int height)
       splat_(gl::Program::from_files("rain.splat", {"rain/splat.vert.glsl", "rain/splat.frag.glsl"})),
       shape_(gl::Program::from_files("rain.shape", {"common/fullscreen.vert.glsl", "rain/shape.frag.glsl"})),
       vao_(gl::VertexArray::create("rain.splat")) {
-    // N(h) = 1 / (1 + (h/R)^4) over h/R in [0, kProfileReach], scaled per drop.
+    // N(h) = 1 / (1 + (h/R)^4) over h/R in [0, kMetaballReach], scaled per drop.
     std::vector<float> profile(kProfileTexels);
     for (int i = 0; i < kProfileTexels; ++i) {
-        float x = kProfileReach * float(i) / float(kProfileTexels - 1);
+        float x = kMetaballReach * float(i) / float(kProfileTexels - 1);
         profile[size_t(i)] = 1.0f / (1.0f + x * x * x * x);
     }
     profile_ = gl::Texture::create_2d("rain.profile", GL_R32F, kProfileTexels, 1);
@@ -28,15 +27,15 @@ DropHeightMap::DropHeightMap(int width, int height)
     profile_.set_filter(GL_LINEAR, GL_LINEAR);
     profile_.set_wrap(GL_CLAMP_TO_EDGE);
 
-    density_ = gl::Texture::create_2d("rain.density", GL_RG16F, width, height);
+    sums_ = gl::Texture::create_2d("rain.sums", GL_RGBA16F, width, height);
     surface_ = gl::Texture::create_2d("rain.surface", GL_RGBA16F, width, height);
-    for (gl::Texture* t : {&density_, &surface_}) {
+    for (gl::Texture* t : {&sums_, &surface_}) {
         t->set_filter(GL_LINEAR, GL_LINEAR);
         t->set_wrap(GL_CLAMP_TO_EDGE);
     }
-    density_fbo_ = gl::Framebuffer::create("rain.density");
-    density_fbo_.attach_colour(0, density_);
-    density_fbo_.check_complete();
+    sums_fbo_ = gl::Framebuffer::create("rain.sums");
+    sums_fbo_.attach_colour(0, sums_);
+    sums_fbo_.check_complete();
     surface_fbo_ = gl::Framebuffer::create("rain.surface");
     surface_fbo_.attach_colour(0, surface_);
     surface_fbo_.check_complete();
@@ -60,8 +59,8 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     glDepthMask(GL_FALSE);
     glViewport(0, 0, width_, height_);
 
-    // 1. Splat: additive densities.
-    glBindFramebuffer(GL_FRAMEBUFFER, density_fbo_.id());
+    // 1. Splat: additive sums.
+    glBindFramebuffer(GL_FRAMEBUFFER, sums_fbo_.id());
     const float zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
     if (!metaballs.empty()) {
@@ -71,7 +70,7 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         splat_.use();
         splat_.set("u_glass_size_m", glass_size_m);
         splat_.set("u_radius_scale", radius_scale);
-        splat_.set("u_reach", kProfileReach);
+        splat_.set("u_reach", kMetaballReach);
         splat_.set("u_profile", 0);
         profile_.bind(0);
         vao_.bind();
@@ -79,17 +78,17 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         glDisable(GL_BLEND);
     }
 
-    // 2. Threshold, five-step compression, height and normal per texel.
+    // 2. Threshold, height (compressed if asked) and normal per texel.
     glBindFramebuffer(GL_FRAMEBUFFER, surface_fbo_.id());
     shape_.use();
-    shape_.set("u_density", 0);
+    shape_.set("u_sums", 0);
     shape_.set("u_texel_mm", glm::vec2(glass_size_m.x * 1000.0f / float(width_), glass_size_m.y * 1000.0f / float(height_)));
     shape_.set("u_threshold", c.threshold);
     shape_.set("u_first_level", c.first_level);
     shape_.set("u_level_step", c.level_step);
     shape_.set("u_steps", c.steps);
     shape_.set("u_k", c.k);
-    density_.bind(0);
+    sums_.bind(0);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthMask(GL_TRUE);

@@ -1,10 +1,19 @@
 #pragma once
 // The seed's 2D-metaball height map of the glass (specs/rain.md, "Height map"): each
 // drop splatted additively as N(h) = 1 / (1 + (h/R)^4) from a precomputed profile,
-// then, per texel, the part above T = 0.5 compressed in five steps (V0 = 0.5 .. 0.9,
-// k = 0.3) and turned into a height and a normal. Next to the density it splats the
-// density-weighted radius, so a texel knows how tall its drops are (a single drop's
-// peak is as high as its radius, like the hemisphere it stands for).
+// then per texel a height and a normal. Beside the summed density N the splat adds
+// N^2 R, N^2 x^2 and N^2 (x = h/R), so a texel also knows the drop that dominates it:
+// its radius and how far off its centre the texel is. The texel is then taken as that
+// one 3D metaball, strong enough to give the summed density, and its height is where
+// that ball's field falls to T. This is exact for a lone drop (a hemisphere of its
+// radius) and for two equal drops meeting, and follows the CPU 3D reference
+// (MetaballReference) to 2.9 degrees on the merged-drop scene.
+//
+// Deviation from the seed: its five-step compression (V0 = 0.5 .. 0.9, k = 0.3) stops
+// the spikes of its height N - T at merged drops; this height has none, and the
+// compression only flattens merged drops away from the 3D reference (2.9 -> 5.5 degrees,
+// tests/rain_render_test.cpp). It stays available (HeightCompression::steps = 5; "height
+// compression steps" under "rain" in the debug panel) but is off by default.
 #include <span>
 
 #include <glm/vec2.hpp>
@@ -20,8 +29,8 @@ namespace effects {
 
 struct HeightCompression {
     float threshold = 0.5f;  // T
-    float first_level = 0.5f, level_step = 0.1f;  // V0 = 0.5, 0.6, ... 
-    int steps = 5;
+    float first_level = 0.5f, level_step = 0.1f;  // V0 = 0.5, 0.6, ...
+    int steps = 0;  // the seed's 5: see above
     float k = 0.3f;
 };
 
@@ -30,7 +39,7 @@ public:
     DropHeightMap(int width, int height);
 
     // Splats the metaballs over a glass of glass_size_m (radii times radius_scale),
-    // then compresses and takes normals. Leaves the GL viewport and framebuffer changed.
+    // then takes heights (compressed if asked) and normals. Leaves the GL viewport and framebuffer changed.
     void update(std::span<const RainMetaball> metaballs, glm::vec2 glass_size_m, float radius_scale,
                 const HeightCompression& compression = {});
 
@@ -42,8 +51,8 @@ public:
 private:
     int width_, height_;
     gl::Texture profile_, surface_;
-    gl::Texture density_;  // r: summed density, g: summed density times radius in mm
-    gl::Framebuffer density_fbo_, surface_fbo_;
+    gl::Texture sums_;  // sums over drops of N, N^2 R (mm), N^2 x^2, N^2
+    gl::Framebuffer sums_fbo_, surface_fbo_;
     gl::Program splat_, shape_;
     gl::VertexArray vao_;
     gl::Buffer instances_;

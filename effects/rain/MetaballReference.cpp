@@ -7,13 +7,15 @@ namespace effects {
 
 namespace {
 
+constexpr float kReach2 = kMetaballReach * kMetaballReach;
+constexpr int kTile = 16;  // texels a side of the tiles the drops are culled by
+
 float field(std::span<const RainMetaball> drops, glm::vec2 p, float z2) {
     float sum = 0.0f;
     for (const RainMetaball& d : drops) {
         const glm::vec2 e = p - d.centre_m;
-        const float r2 = d.radius_m * d.radius_m;
-        const float q = (e.x * e.x + e.y * e.y + z2) / r2;
-        if (q < 16.0f) sum += 1.0f / (1.0f + q * q);  // beyond 4 R: under 1/257
+        const float q = (e.x * e.x + e.y * e.y + z2) / (d.radius_m * d.radius_m);
+        if (q < kReach2) sum += 1.0f / (1.0f + q * q);
     }
     return sum;
 }
@@ -26,17 +28,31 @@ std::vector<SurfaceSample> reference_surface(std::span<const RainMetaball> drops
     for (const RainMetaball& d : drops) reach = std::max(reach, d.radius_m);
     const glm::vec2 texel = glass_size_m / glm::vec2(float(width), float(height));
     std::vector<float> h(size_t(width) * size_t(height), 0.0f);
-    for (int j = 0; j < height; ++j)
-        for (int i = 0; i < width; ++i) {
-            const glm::vec2 p = (glm::vec2(float(i), float(j)) + 0.5f) * texel;
-            if (field(drops, p, 0.0f) <= threshold) continue;
-            // The field falls with height above the glass: bisect for the iso-surface.
-            float lo = 0.0f, hi = 4.0f * reach;
-            for (int k = 0; k < 24; ++k) {
-                const float mid = 0.5f * (lo + hi);
-                (field(drops, p, mid * mid) > threshold ? lo : hi) = mid;
+    std::vector<RainMetaball> near;
+    for (int tj = 0; tj < height; tj += kTile)
+        for (int ti = 0; ti < width; ti += kTile) {
+            // Only drops whose support reaches the tile's texel centres add to its field:
+            // the same sums as over all drops, at a cost that grows with the glass's area.
+            const glm::vec2 lo = (glm::vec2(float(ti), float(tj)) + 0.5f) * texel;
+            const glm::vec2 hi = (glm::vec2(float(std::min(ti + kTile, width)), float(std::min(tj + kTile, height))) - 0.5f) * texel;
+            near.clear();
+            for (const RainMetaball& d : drops) {
+                const glm::vec2 e = d.centre_m - glm::clamp(d.centre_m, lo, hi);
+                if (e.x * e.x + e.y * e.y < kReach2 * d.radius_m * d.radius_m) near.push_back(d);
             }
-            h[size_t(j) * size_t(width) + size_t(i)] = 0.5f * (lo + hi) * 1000.0f;
+            if (near.empty()) continue;
+            for (int j = tj; j < std::min(tj + kTile, height); ++j)
+                for (int i = ti; i < std::min(ti + kTile, width); ++i) {
+                    const glm::vec2 p = (glm::vec2(float(i), float(j)) + 0.5f) * texel;
+                    if (field(near, p, 0.0f) <= threshold) continue;
+                    // The field falls with height above the glass: bisect for the iso-surface.
+                    float lo_z = 0.0f, hi_z = kMetaballReach * reach;
+                    for (int k = 0; k < 24; ++k) {
+                        const float mid = 0.5f * (lo_z + hi_z);
+                        (field(near, p, mid * mid) > threshold ? lo_z : hi_z) = mid;
+                    }
+                    h[size_t(j) * size_t(width) + size_t(i)] = 0.5f * (lo_z + hi_z) * 1000.0f;
+                }
         }
     // Normals as the GPU path takes them: from the right and upper neighbours.
     std::vector<SurfaceSample> out(h.size());

@@ -17,6 +17,7 @@ void RainPass::register_params(ParamRegistry& params) {
     params.add("rain", "refraction", &look_.refraction, 0.0f, 0.2f);
     params.add("rain", "background blur (mip)", &look_.blur_lod, 0.0f, 5.0f);
     params.add("rain", "rim darkening", &look_.rim, 0.0f, 1.0f);
+    params.add("rain", "height compression steps", &look_.compression_steps, 0, 5);
 }
 
 void RainPass::render(const FrameContext& frame) {
@@ -31,7 +32,9 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     const sim::GlassSurface& glass = *view.glass;
     if (!mesh_ || mesh_->glass() != &glass) mesh_ = std::make_unique<WindshieldMesh>(glass);
     const glm::vec2 glass_size(glass.width_m(), glass.height_m());
-    height_map_.update(view.metaballs, glass_size, look_.radius_scale);
+    HeightCompression compression;
+    compression.steps = look_.compression_steps;
+    height_map_.update(view.metaballs, glass_size, look_.radius_scale, compression);
 
     // What lies behind the glass now (water and all), with mips: the copy SceneTargets
     // keeps predates the water and has none.

@@ -23,6 +23,7 @@ struct RainLook {
     float refraction = 0.08f;   // screen offset (of its height) per unit of normal tilt
     float blur_lod = 2.5f;      // mip of the scene behind a drop 1 m from the eye, at 360 lines: out of focus
     float rim = 0.4f;           // darkening at a drop's steep edge (light bent away)
+    int compression_steps = 0;  // the seed's height compression, off (DropHeightMap.h)
 };
 
 class RainPass final : public Pass {

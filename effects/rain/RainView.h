@@ -24,6 +24,10 @@ struct RainMetaball {
 };
 static_assert(sizeof(RainMetaball) == 16, "RainMetaball is uploaded as one vec4 per instance");
 
+// Where the metaball kernel 1 / (1 + (d/R)^4) is cut off, in radii (N = 1/257 there):
+// the height map's splats and its 3D reference use the same support.
+constexpr float kMetaballReach = 4.0f;
+
 struct WiperBladeView {
     glm::vec2 pivot_m{0.0f};
     glm::vec2 direction{1.0f, 0.0f};  // unit, along the arm

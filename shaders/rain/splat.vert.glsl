@@ -1,5 +1,5 @@
 #version 450 core
-// One metaball of the rain height map: a quad reaching kProfileReach radii around the
+// One metaball of the rain height map: a quad reaching kMetaballReach radii around the
 // drop, in the glass's coordinates (metres) mapped onto the whole texture.
 layout(location = 0) in vec4 a_drop;  // centre u, v (m), radius (m), unused
 uniform vec2 u_glass_size_m;

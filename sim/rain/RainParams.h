@@ -15,7 +15,7 @@ namespace sim {
 // the height), so the same layout fits any windshield.
 struct WiperLayout {
     glm::vec2 pivot{0.2f, -0.04f};
-    float inner = 0.12f, outer = 0.76f;
+    float inner = 0.12f, outer = 0.9f;
     float rest_rad = 0.05f, sweep_rad = 2.1f;
 };
 
@@ -56,8 +56,11 @@ struct RainParams {
     int max_particles = 20000;
 
     WiperMotorParams motor;
-    std::array<WiperLayout, 2> blades = {WiperLayout{{0.2f, -0.04f}, 0.12f, 0.76f, 0.05f, 2.15f},
-                                         WiperLayout{{0.62f, -0.04f}, 0.12f, 0.76f, 0.05f, 1.95f}};
+    // Rubber out to 0.9 of the glass height: upright, a blade reaches 0.86 of it (at
+    // 0.76, 0.72: no cleared arc read from the driver's seat). The left tip runs a
+    // little past the side at the end of its sweep, the right one at rest.
+    std::array<WiperLayout, 2> blades = {WiperLayout{{0.2f, -0.04f}, 0.12f, 0.9f, 0.05f, 2.15f},
+                                         WiperLayout{{0.62f, -0.04f}, 0.12f, 0.9f, 0.05f, 1.95f}};
 };
 
 }  // namespace sim
