@@ -311,15 +311,25 @@ TEST(SplashSheet, VerticesFallBackBelowTheSurfaceAndRipple) {
     launched += s.second_splash(0.22f, 1400.0f, rng, flat, 0.0f);
     std::vector<sim::Ripple> ripples;
     float highest = 0.0f;
-    int ticks = 0;
+    int ticks = 0, torn = 0;
     while (s.active() && ticks < 600) {
         s.step(kDt, flat, 0.0f, ripples);
         for (const glm::vec3& p : s.positions()) highest = std::max(highest, p.y);
+        // What tore off had flown clear of the film: up in the air and moving.
+        for (const sim::TornOff& t : s.torn()) {
+            EXPECT_GT(t.position.y, -s.params().hidden_depth_m);
+            EXPECT_GT(glm::length(t.velocity), 0.0f);
+        }
+        torn += int(s.torn().size());
         ++ticks;
     }
     EXPECT_LT(ticks, 120);  // back within two seconds
     EXPECT_GT(highest, 0.3f);  // but it really rose
-    EXPECT_EQ(int(ripples.size()), launched);
+    // Every launched vertex either fell back (a ripple) or tore off as a droplet, and
+    // the crown's top did tear, but most of the film came down whole.
+    EXPECT_EQ(int(ripples.size()) + torn, launched);
+    EXPECT_GT(torn, 0);
+    EXPECT_LT(torn, launched / 4) << torn << " of " << launched << " tore off";
     for (const glm::vec3& p : s.positions()) ASSERT_NEAR(p.y, -s.params().hidden_depth_m, 1e-6f);
     for (uint8_t a : s.airborne()) ASSERT_EQ(a, 0);
 }
@@ -635,8 +645,10 @@ TEST(Water, BoatAtSpeedThrowsContinuousBowSpray) {
         if (u < 4.0f) continue;
         ++fast_ticks;
         // Droplets born this tick have flown one step; the rule gives per_m * u * dt.
+        // (Scraps torn off the bow's sheet, a size of their own, come on top.)
         int born = 0;
-        for (const sim::SprayParticle& q : h.water->spray().particles()) born += int(q.age_s < 1.5f * kDt);
+        for (const sim::SprayParticle& q : h.water->spray().particles())
+            born += int(q.age_s < 1.5f * kDt && q.radius_m < h.water->params().sheet.torn_drop_radius_m);
         if (born >= int(per_m * u * kDt)) ++ticks_with_spray;
         emitted += born;
         expected += per_m * u * kDt;
