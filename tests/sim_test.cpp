@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "SimTestLevel.h"
@@ -165,8 +166,19 @@ TEST(Car, StopsAtAWall) {
 
 TEST(Boat, FloatsAtItsWaterlineAtRest) {
     sim::World w(make_test_level());
-    run(w, 600, TickInput{});
+    // Set down 0.3 m high, nose up and leaning left: it must settle level at its waterline.
+    sim::Pose start = w.get<sim::Boat>().pose();
+    start.position.y = 0.3f;
+    start.pitch_rad = 0.15f;
+    start.roll_rad = -0.2f;
+    w.get<sim::Boat>() = sim::Boat(start);
     const sim::Boat& b = w.get<sim::Boat>();
+    float lowest = b.position().y;
+    for (int t = 0; t < 600; ++t) {
+        w.step({});
+        lowest = std::min(lowest, b.position().y);
+    }
+    EXPECT_LT(lowest, 0.1f);  // it fell onto the water rather than hovering
     EXPECT_NEAR(b.position().y, 0.0f, 0.01f);
     EXPECT_NEAR(b.pose().pitch_rad, 0.0f, 0.01f);
     EXPECT_NEAR(b.pose().roll_rad, 0.0f, 0.01f);

@@ -308,6 +308,12 @@ TEST(SplashSheetMesh, OnlyTrianglesWithThreeAirborneCornersWithUpwardNormalsAtRe
         EXPECT_NEAR(v.normal.y, 1.0f, 1e-6f);
         EXPECT_NEAR(v.stretch, 1.0f, 1e-5f);
     }
+    // Cover: the block's centre has all six of its triangles, the edges and corners fewer.
+    EXPECT_FLOAT_EQ(mesh.vertices[size_t(2 * n + 2)].cover, 1.0f);
+    EXPECT_FLOAT_EQ(mesh.vertices[size_t(2 * n + 1)].cover, 3.0f / 6.0f);  // on an edge
+    EXPECT_FLOAT_EQ(mesh.vertices[size_t(1 * n + 1)].cover, 2.0f / 6.0f);  // the corner on the diagonal
+    EXPECT_FLOAT_EQ(mesh.vertices[size_t(1 * n + 3)].cover, 1.0f / 6.0f);  // the other corner
+    EXPECT_FLOAT_EQ(mesh.vertices[size_t(5 * n + 5)].cover, 0.0f);
 
     // A second sheet's indices point past the first's vertices.
     mesh.append({n, 0.1f, pos, air}, 6.0f);
@@ -323,6 +329,7 @@ TEST(SplashSheetMesh, OnlyTrianglesWithThreeAirborneCornersWithUpwardNormalsAtRe
     EXPECT_GE(mesh.indices.size(), 5u * 3u);
     for (uint32_t idx : mesh.indices) EXPECT_TRUE(air[idx]);
     EXPECT_GT(mesh.vertices[size_t(2 * n + 3)].stretch, 10.0f) << "its neighbour sees the film stretched";
+    EXPECT_LT(mesh.vertices[size_t(2 * n + 2)].cover, 1.0f) << "the tear's edge runs past the block's centre";
 }
 
 TEST_F(WaterRenderTest, WithoutAGridTheFlatSeaLiesAtSeaLevel) {

@@ -169,6 +169,62 @@ TEST(WaveGrid, LandStaysPinnedAndReflectsAndThreadsAgree) {
     EXPECT_NE(a.hash(), b.hash());
 }
 
+double rms(const std::vector<float>& y) {
+    double s = 0.0;
+    for (float v : y) s += double(v) * v;
+    return std::sqrt(s / double(y.size()));
+}
+
+TEST(WaveGrid, DampingTakesTheStatedFractionOfWaveEnergyPerSecond) {
+    // damping_per_s is the fraction of wave energy lost per second, so heights shrink
+    // by sqrt(1 - d) each second against the same waves without damping.
+    sim::WaveGridParams free_p = fast_grid(128), damped_p = fast_grid(128);
+    damped_p.damping_per_s = 0.25f;
+    sim::WaveGrid free_g(free_p, kDt), damped(damped_p, kDt);
+    free_g.set_heights(gaussian_bump(128, 64.0f, 64.0f, 3.0f, 0.2f));
+    damped.set_heights(gaussian_bump(128, 64.0f, 64.0f, 3.0f, 0.2f));
+    for (int second = 1; second <= 4; ++second) {
+        for (int t = 0; t < 60; ++t) {
+            free_g.step();
+            damped.step();
+        }
+        const double ratio = rms(damped.heights()) / rms(free_g.heights());
+        EXPECT_NEAR(ratio, std::pow(0.75, 0.5 * second), 0.01) << "after " << second << " s";
+    }
+}
+
+TEST(WaveGrid, QuayReflectsTheFrontBack) {
+    // The same bump 15 m off a quay and on open water: only by the quay does a front
+    // come back to the bump's seaward side, with the sign and size of the direct one
+    // at the same travel distance (the seed's free boundary reflects like a mirror).
+    sim::WaveGrid quay(fast_grid(128), kDt), open(fast_grid(128), kDt);
+    std::vector<uint8_t> land(128 * 128, 0);
+    for (int j = 0; j < 20; ++j)
+        for (int i = 0; i < 128; ++i) land[size_t(j) * 128 + size_t(i)] = 1;
+    quay.set_land_mask(land);
+    quay.set_heights(gaussian_bump(128, 64.0f, 50.0f, 2.0f, 0.3f));
+    open.set_heights(gaussian_bump(128, 64.0f, 50.0f, 2.0f, 0.3f));
+    // Fronts move half a cell per tick: the quay (30 cells away) is reached at tick 60;
+    // the echo passes (64, 40), 50 cells of travel, near tick 100.
+    float echo = 0.0f, open_there = 0.0f, direct = 0.0f;
+    int echo_tick = -1;
+    for (int t = 1; t <= 130; ++t) {
+        quay.step();
+        open.step();
+        if (t < 80) continue;
+        if (std::fabs(quay.height(64, 40)) > std::fabs(echo)) {
+            echo = quay.height(64, 40);
+            echo_tick = t;
+        }
+        open_there = std::max(open_there, std::fabs(open.height(64, 40)));
+        if (std::fabs(open.height(64, 100)) > std::fabs(direct)) direct = open.height(64, 100);  // 50 cells out
+    }
+    EXPECT_GT(echo, 0.0f);
+    EXPECT_NEAR(echo_tick, 100, 6);
+    EXPECT_GT(std::fabs(echo), 5.0f * open_there) << "open water " << open_there;
+    EXPECT_NEAR(echo / direct, 1.0f, 0.3f) << "echo " << echo << ", direct " << direct;
+}
+
 TEST(SplashSheet, FirstSplashFollowsTheSeedsRing) {
     sim::SplashSheetParams p;
     sim::WaveGrid flat({}, kDt);
@@ -255,15 +311,25 @@ TEST(SplashSheet, VerticesFallBackBelowTheSurfaceAndRipple) {
     launched += s.second_splash(0.22f, 1400.0f, rng, flat, 0.0f);
     std::vector<sim::Ripple> ripples;
     float highest = 0.0f;
-    int ticks = 0;
+    int ticks = 0, torn = 0;
     while (s.active() && ticks < 600) {
         s.step(kDt, flat, 0.0f, ripples);
         for (const glm::vec3& p : s.positions()) highest = std::max(highest, p.y);
+        // What tore off had flown clear of the film: up in the air and moving.
+        for (const sim::TornOff& t : s.torn()) {
+            EXPECT_GT(t.position.y, -s.params().hidden_depth_m);
+            EXPECT_GT(glm::length(t.velocity), 0.0f);
+        }
+        torn += int(s.torn().size());
         ++ticks;
     }
     EXPECT_LT(ticks, 120);  // back within two seconds
     EXPECT_GT(highest, 0.3f);  // but it really rose
-    EXPECT_EQ(int(ripples.size()), launched);
+    // Every launched vertex either fell back (a ripple) or tore off as a droplet, and
+    // the crown's top did tear, but most of the film came down whole.
+    EXPECT_EQ(int(ripples.size()) + torn, launched);
+    EXPECT_GT(torn, 0);
+    EXPECT_LT(torn, launched / 4) << torn << " of " << launched << " tore off";
     for (const glm::vec3& p : s.positions()) ASSERT_NEAR(p.y, -s.params().hidden_depth_m, 1e-6f);
     for (uint8_t a : s.airborne()) ASSERT_EQ(a, 0);
 }
@@ -317,7 +383,7 @@ TEST(Water, HeavyObjectSplashesTwiceInOrderAndSinksToTheBottom) {
     Harbour h(make_test_level());
     drop(h, kDroppedStone, {50.0f, 4.0f, 20.0f});
     int first = -1, second = -1, firsts = 0, seconds = 0;
-    float dip = 0.0f, highest = 0.0f;
+    float dip = 0.0f, refill = 0.0f, highest = 0.0f;
     size_t spray = 0;
     for (int t = 0; t < 600; ++t) {
         h.world.step({});
@@ -329,6 +395,7 @@ TEST(Water, HeavyObjectSplashesTwiceInOrderAndSinksToTheBottom) {
             } else {
                 second = t;
                 ++seconds;
+                refill = h.water->grid().sample({e.position.x, e.position.z});
             }
         }
         for (const sim::SplashSheet& s : h.water->sheets())
@@ -342,11 +409,102 @@ TEST(Water, HeavyObjectSplashesTwiceInOrderAndSinksToTheBottom) {
     EXPECT_GE(second - first, 15);  // the crater refills in 0.25..0.4 s
     EXPECT_LE(second - first, 24);
     EXPECT_LT(dip, -0.02f);  // the surface dipped where it went in
+    // The jet came because the crater refilled, not because the wait ran out.
+    EXPECT_GE(refill, 0.25f * dip) << "dip " << dip << " m, centre " << refill << " m at the jet";
     EXPECT_GT(highest, 0.2f);
     EXPECT_LT(highest, 3.0f);  // metres, not kilometres
     const sim::ThrownObject& stone = h.world.get<sim::ThrownObjects>().objects().at(0);
     EXPECT_NEAR(stone.position.y, -6.0f + stone.radius_m, 0.02f);
     EXPECT_GT(spray, 100u);  // a stone of ~110 kg at ~9 m/s: 0.2 droplets per kg m/s
+}
+
+struct SplashSize {
+    float ring_m = 0.0f;   // mean distance of the launched sheet vertices from the entry
+    float crown_m = 0.0f;  // highest sheet vertex
+    size_t spray = 0;      // most droplets in the air at once
+};
+
+SplashSize splash_of(const sim::ThrowKind& kind, glm::vec3 velocity) {
+    Harbour h(make_test_level());
+    h.world.get<sim::ThrownObjects>().launch(kind, {50.0f, 1.0f, 20.0f}, {0.0f, 0.0f, 1.0f}, velocity);
+    SplashSize out;
+    for (int t = 0; t < 240; ++t) {
+        h.world.step({});
+        for (const sim::SplashEvent& e : h.water->splashes()) {
+            if (e.kind != sim::SplashEvent::Kind::First) continue;
+            const sim::SplashSheet& sheet = h.water->sheets()[size_t(e.sheet)];
+            double sum = 0.0;
+            int n = 0;
+            for (size_t k = 0; k < sheet.positions().size(); ++k)
+                if (sheet.airborne()[k]) {
+                    sum += glm::length(glm::vec2(sheet.positions()[k].x - e.position.x, sheet.positions()[k].z - e.position.z));
+                    ++n;
+                }
+            out.ring_m = n ? float(sum / n) : 0.0f;
+        }
+        for (const sim::SplashSheet& sheet : h.water->sheets())
+            for (size_t k = 0; k < sheet.positions().size(); ++k)
+                if (sheet.airborne()[k]) out.crown_m = std::max(out.crown_m, sheet.positions()[k].y);
+        out.spray = std::max(out.spray, h.water->spray().particles().size());
+    }
+    return out;
+}
+
+TEST(Water, BiggerOrFasterStoneMakesABiggerSplash) {
+    const glm::vec3 slow(0.0f, -5.0f, 0.0f), fast(0.0f, -10.0f, 0.0f);
+    constexpr sim::ThrowKind kBigStone{0.44f, 2600.0f, 0.0f};
+    const SplashSize base = splash_of(kDroppedStone, slow);
+    const SplashSize big = splash_of(kBigStone, slow);
+    const SplashSize quick = splash_of(kDroppedStone, fast);
+    ASSERT_GT(base.ring_m, 0.0f);
+    EXPECT_GT(big.ring_m, 1.5f * base.ring_m);  // the ring follows the diameter
+    EXPECT_GT(big.crown_m, base.crown_m);
+    EXPECT_GT(big.spray, base.spray);
+    EXPECT_NEAR(quick.ring_m, base.ring_m, 0.15f * base.ring_m);  // speed does not widen it
+    EXPECT_GT(quick.crown_m, base.crown_m);
+    EXPECT_GT(quick.spray, base.spray);
+}
+
+TEST(Water, DropletsRippleTheGridWhereTheyLand) {
+    // Two harbours with the same stone, one without spray: the sheets draw the same
+    // random numbers, so the grids differ only by the droplets' ripples.
+    sim::WaterParams dry;
+    dry.max_spray_per_impact = 0;
+    Harbour with(make_test_level()), without(make_test_level(), 1, dry);
+    drop(with, kDroppedStone, {50.0f, 4.0f, 20.0f});
+    drop(without, kDroppedStone, {50.0f, 4.0f, 20.0f});
+    std::vector<glm::vec3> before;
+    int landing_ticks = 0;
+    for (int t = 0; t < 300 && landing_ticks < 5; ++t) {
+        before.clear();
+        for (const sim::SprayParticle& q : with.water->spray().particles()) before.push_back(q.position);
+        with.world.step({});
+        without.world.step({});
+        const auto& a = with.water->grid().heights();
+        const auto& b = without.water->grid().heights();
+        const sim::WaveGrid& g = with.water->grid();
+        const bool landed = with.water->spray().particles().size() < before.size();
+        if (!landed && landing_ticks == 0) {
+            ASSERT_EQ(a, b) << "tick " << t << ": the grids differ before any droplet landed";
+            continue;
+        }
+        if (landing_ticks++ > 0) continue;
+        // The first landings: every changed cell lies within a ripple's reach of a
+        // droplet that was in the air a tick ago.
+        int changed = 0;
+        for (int j = 0; j < g.size(); ++j)
+            for (int i = 0; i < g.size(); ++i) {
+                size_t k = size_t(j) * size_t(g.size()) + size_t(i);
+                if (a[k] == b[k]) continue;
+                ++changed;
+                glm::vec2 cell = g.origin() + glm::vec2(float(i), float(j)) * g.spacing();
+                float nearest = 1e9f;
+                for (const glm::vec3& q : before) nearest = std::min(nearest, glm::length(glm::vec2(q.x, q.z) - cell));
+                ASSERT_LT(nearest, g.spacing() + 0.3f) << "cell " << i << "," << j;
+            }
+        EXPECT_GT(changed, 0);
+    }
+    EXPECT_GT(landing_ticks, 0) << "no droplet came down";
 }
 
 TEST(Water, LightObjectSplashesOnceFloatsAndRidesTheWaves) {
@@ -385,6 +543,38 @@ TEST(Water, LightObjectSplashesOnceFloatsAndRidesTheWaves) {
     EXPECT_EQ(seconds, 0);
 }
 
+TEST(Water, LightObjectDriftsWithAPassingWave) {
+    Harbour h(make_test_level());
+    drop(h, kDroppedFloat, {50.0f, 4.0f, 20.0f});
+    for (int t = 0; t < 480; ++t) h.world.step({});
+    const glm::vec3 start = h.world.get<sim::ThrownObjects>().objects().at(0).position;
+    // Still water: it stays put.
+    for (int t = 0; t < 120; ++t) h.world.step({});
+    glm::vec3 p = h.world.get<sim::ThrownObjects>().objects().at(0).position;
+    EXPECT_LT(glm::length(glm::vec2(p.x - start.x, p.z - start.z)), 0.01f);
+    // A long ridge raised 5 m to the -x side sends a straight crest along +x under it.
+    // The water under a shallow-water crest moves with it at u = g eta / v: the float
+    // goes with it, by less than (g / v) times the integral of eta over time (some of
+    // that is the still, raised level the damped crest leaves behind).
+    for (float z = start.z - 20.0f; z <= start.z + 20.0f; z += 1.0f)
+        h.water->disturb({start.x - 5.0f, z}, 2.0f, -0.1f);
+    float peak = -1e9f;
+    double eta_dt = 0.0;
+    for (int t = 0; t < 360; ++t) {
+        h.world.step({});
+        p = h.world.get<sim::ThrownObjects>().objects().at(0).position;
+        const float eta = h.water->height_at({p.x, p.z});
+        peak = std::max(peak, eta);
+        eta_dt += eta * kDt;
+    }
+    const float theory = float(9.81 / h.water->params().grid.wave_speed_mps * eta_dt);
+    EXPECT_GT(peak, 0.05f) << "no crest passed";
+    EXPECT_GT(theory, 0.05f);
+    EXPECT_GT(p.x - start.x, 0.1f) << "the float did not drift with the wave";
+    EXPECT_LT(p.x - start.x, theory);
+    EXPECT_LT(std::fabs(p.z - start.z), 0.2f * (p.x - start.x));  // along the wave, not across it
+}
+
 TEST(Water, SplashSheetsAllFallBackWithinSeconds) {
     Harbour h(make_test_level());
     drop(h, kDroppedStone, {45.0f, 4.0f, 25.0f});
@@ -418,9 +608,11 @@ TEST(Water, BoatAtRestRidesAtItsWaterline) {
     for (int t = 0; t < 120; ++t) h.world.step({});
     drop(h, kDroppedStone, {43.0f, 4.0f, 30.0f});  // waves running under the hull
     drop(h, kDroppedStone, {40.0f, 4.0f, 35.0f});
-    float worst = 0.0f, swing = 0.0f;
+    float worst = 0.0f, swing = 0.0f, pitch = 0.0f, roll = 0.0f;
     for (int t = 0; t < 360; ++t) {
         h.world.step({});
+        pitch = std::max(pitch, std::fabs(boat.pose().pitch_rad));
+        roll = std::max(roll, std::fabs(boat.pose().roll_rad));
         float water = 0.0f;
         for (int k = 0; k < sim::Boat::kHullPoints; ++k) {
             glm::vec2 hp = boat.hull_point(k);
@@ -432,6 +624,8 @@ TEST(Water, BoatAtRestRidesAtItsWaterline) {
     }
     EXPECT_LT(worst, 0.03f);
     EXPECT_GT(swing, 0.002f);  // the water under it did move
+    EXPECT_GT(pitch, 0.002f);  // and it rocked with it
+    EXPECT_GT(roll, 0.002f);
     EXPECT_NEAR(boat.position().x, 40.0f, 0.05f);
 }
 
@@ -443,11 +637,21 @@ TEST(Water, BoatAtSpeedThrowsContinuousBowSpray) {
     throttle.set(Control::Throttle, true);
     int ticks_with_spray = 0, ticks_with_sheet = 0, fast_ticks = 0;
     float behind = 0.0f;
+    double emitted = 0.0, expected = 0.0;
+    const float per_m = h.water->params().bow_spray_per_m;
     for (int t = 0; t < 420; ++t) {
         h.world.step(throttle);
-        if (h.world.get<sim::Boat>().speed_mps() < 4.0f) continue;
+        const float u = h.world.get<sim::Boat>().speed_mps();
+        if (u < 4.0f) continue;
         ++fast_ticks;
-        if (!h.water->spray().particles().empty()) ++ticks_with_spray;
+        // Droplets born this tick have flown one step; the rule gives per_m * u * dt.
+        // (Scraps torn off the bow's sheet, a size of their own, come on top.)
+        int born = 0;
+        for (const sim::SprayParticle& q : h.water->spray().particles())
+            born += int(q.age_s < 1.5f * kDt && q.radius_m < h.water->params().sheet.torn_drop_radius_m);
+        if (born >= int(per_m * u * kDt)) ++ticks_with_spray;
+        emitted += born;
+        expected += per_m * u * kDt;
         int k = h.water->bow_sheet();
         if (k < 0) continue;
         const sim::SplashSheet& sheet = h.water->sheets()[size_t(k)];
@@ -460,7 +664,8 @@ TEST(Water, BoatAtSpeedThrowsContinuousBowSpray) {
     }
     EXPECT_LT(behind, 1.0f);
     ASSERT_GT(fast_ticks, 200);
-    EXPECT_EQ(ticks_with_spray, fast_ticks);
+    EXPECT_EQ(ticks_with_spray, fast_ticks);  // every tick at least the whole part of the rate
+    EXPECT_NEAR(emitted / expected, 1.0, 0.1) << emitted << " droplets, " << expected << " by the rule";
     EXPECT_EQ(ticks_with_sheet, fast_ticks);
     // Its wake: the water behind the boat moves.
     glm::vec3 b = h.world.get<sim::Boat>().position();

@@ -32,6 +32,8 @@ void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch) {
             if (up(i, j + 1) && intact(pa, pc, pd)) indices.insert(indices.end(), {a, c, d});
         }
     if (indices.size() == first_index) return;
+    std::vector<uint8_t> drawn(size_t(n) * size_t(n), 0);
+    for (size_t k = first_index; k < indices.size(); ++k) ++drawn[indices[k] - base];
 
     vertices.reserve(vertices.size() + size_t(n) * size_t(n));
     for (int j = 0; j < n; ++j)
@@ -47,7 +49,8 @@ void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch) {
             float rest = float((i1 - i0) * (j1 - j0)) * sheet.spacing_m * sheet.spacing_m;
             float stretch = std::isfinite(len) ? len / rest : 1.0f;
             normal = (len > 1e-12f && std::isfinite(len)) ? normal / len : glm::vec3(0.0f, 1.0f, 0.0f);
-            vertices.push_back({pos(i, j), normal, glm::vec2(float(i), float(j)), stretch});
+            const float cover = float(drawn[size_t(j) * size_t(n) + size_t(i)]) / 6.0f;
+            vertices.push_back({pos(i, j), normal, glm::vec2(float(i), float(j)), stretch, cover});
         }
 }
 

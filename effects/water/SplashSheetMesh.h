@@ -18,6 +18,7 @@ struct SheetVertex {
     glm::vec3 normal{0.0f, 1.0f, 0.0f};
     glm::vec2 cell{0.0f};  // (i, j) in the sheet: foam patterns stretch with the film
     float stretch = 1.0f;  // area around the vertex over its area at rest: the film thins as it grows
+    float cover = 1.0f;    // share of its six triangles drawn: less where the film is torn or ends
 };
 
 struct SplashSheetMesh {

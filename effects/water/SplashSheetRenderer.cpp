@@ -22,6 +22,7 @@ SplashSheetRenderer::SplashSheetRenderer()
     vao_.attribute(1, 0, 3, GL_FLOAT, offsetof(SheetVertex, normal));
     vao_.attribute(2, 0, 2, GL_FLOAT, offsetof(SheetVertex, cell));
     vao_.attribute(3, 0, 1, GL_FLOAT, offsetof(SheetVertex, stretch));
+    vao_.attribute(4, 0, 1, GL_FLOAT, offsetof(SheetVertex, cover));
 }
 
 bool SplashSheetRenderer::update(const WaterView& view, float tear_stretch) {

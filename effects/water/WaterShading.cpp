@@ -19,7 +19,7 @@ WaterShading::WaterShading()
 void WaterShading::begin_geometry(const SceneTargets& t) {
     if (t.colour().id() != colour_id_ || t.normal().id() != normal_id_ || t.depth().id() != depth_id_ ||
         kind_.width() != t.width() || kind_.height() != t.height()) {
-        kind_ = gl::Texture::create_2d("water.kind", GL_RG8, t.width(), t.height());
+        kind_ = gl::Texture::create_2d("water.kind", GL_RGBA8, t.width(), t.height());
         kind_.set_filter(GL_NEAREST, GL_NEAREST);
         kind_.set_wrap(GL_CLAMP_TO_EDGE);
         mask_depth_ = gl::Texture::create_2d("water.mask", GL_DEPTH_COMPONENT32F, t.width(), t.height());

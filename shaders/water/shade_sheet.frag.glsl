@@ -6,7 +6,7 @@
 // the sea, lets through most of what is behind it and whitens where it is torn.
 uniform sampler2D u_depth;    // the scene's depth, water included
 uniform sampler2D u_normals;  // the scene's normals, water included
-uniform sampler2D u_kind;     // r: 0 none, 0.5 sea, 0.76..1 sheet (its thickness); g: foam
+uniform sampler2D u_kind;     // r: 0 none, 0.5 sea, 0.76..1 sheet (its thickness); g: foam; b: opacity
 uniform float u_sheet_thickness_m;  // at rest
 layout(location = 0) out vec4 o_colour;
 
@@ -40,7 +40,7 @@ vec3 shade_sheet(vec3 pos, vec3 n, vec3 v, float sun, float thickness_m, float w
 
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
-    vec2 kind = texelFetch(u_kind, px, 0).rg;
+    vec3 kind = texelFetch(u_kind, px, 0).rgb;
     if (kind.r < 0.7) discard;
     vec3 pos = world_from_depth(gl_FragCoord.xy * u_inv_viewport, texelFetch(u_depth, px, 0).r);
     vec3 n = texelFetch(u_normals, px, 0).xyz;
@@ -48,5 +48,6 @@ void main() {
     vec3 v = normalize(u_eye - pos);
     float thickness = u_sheet_thickness_m * clamp((kind.r - 0.76) / 0.24, 0.0, 1.0);
     vec3 c = shade_sheet(pos, n, v, sun_visibility(pos, vec3(0, 1, 0)), thickness, kind.g);
+    c = mix(sheet_background(vec3(0, 1, 0)), c, kind.b);  // what lies behind shows through its edges
     o_colour = vec4(apply_fog(c, pos, u_eye), 1.0);
 }

@@ -3,16 +3,18 @@
 // A splash sheet's geometry step (WaterShading): a film of thrown-up water, so its
 // normal faces the eye from either side; how thin it has stretched (kind: 0.76 at 1/x
 // of its rest thickness .. 1 at rest); and how white it is: torn patches fixed in the
-// film (they stretch with it), more of them high up and where it has stretched thin.
+// film (they stretch with it), more of them high up and where it has stretched thin;
+// and how opaque it is, fading out towards its torn edges.
 in vec3 v_world_pos;
 in vec3 v_normal;
 in vec2 v_cell;
 in float v_stretch;
+in float v_cover;
 uniform vec3 u_eye;
 uniform float u_sea_level;
 uniform float u_foam;
 layout(location = 0) out vec4 o_normal;
-layout(location = 1) out vec2 o_kind;  // sheet kind with its thickness, whiteness
+layout(location = 1) out vec4 o_kind;  // sheet kind with its thickness, whiteness, opacity
 
 void main() {
     vec3 n = normalize(v_normal);
@@ -26,5 +28,8 @@ void main() {
     float whiteness = u_foam * (0.3 + 0.25 * smoothstep(0.2, 1.5, height) + 0.45 * smoothstep(0.45, 0.8, patches) +
                                 0.35 * smoothstep(2.0, 10.0, stretch));
     o_normal = vec4(n, 1.0);
-    o_kind = vec2(0.76 + 0.24 / stretch, clamp(whiteness, 0.0, 0.9));
+    // The film thins out to nothing towards a torn or ragged edge rather than ending in
+    // a hard polygon outline.
+    float opacity = smoothstep(0.15, 1.0, v_cover);
+    o_kind = vec4(0.76 + 0.24 / stretch, clamp(whiteness, 0.0, 0.9), opacity, 1.0);
 }

@@ -13,7 +13,7 @@ uniform float u_grid_spacing;
 uniform int u_grid_size;
 uniform float u_ripples;
 layout(location = 0) out vec4 o_normal;
-layout(location = 1) out vec2 o_kind;  // 0.5 = sea, crest weight
+layout(location = 1) out vec4 o_kind;  // 0.5 = sea, crest weight; b (sheet opacity) unused
 
 // Slope (dh/dx, dh/dz) of the wave grid at xz and how much of a breaking crest it is
 // (steep, and peaked: negative Laplacian). Fades to flat over the last cell, where the
@@ -37,5 +37,5 @@ void main() {
     float crest;
     vec2 slope = grid_slope(v_world_pos.xz, crest) + ripple_slope(v_world_pos.xz, u_time_s, dist) * u_ripples;
     o_normal = vec4(normalize(vec3(-slope.x, 1.0, -slope.y)), 1.0);
-    o_kind = vec2(0.5, clamp(crest, 0.0, 1.0));
+    o_kind = vec4(0.5, clamp(crest, 0.0, 1.0), 1.0, 1.0);
 }

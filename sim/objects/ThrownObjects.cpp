@@ -18,6 +18,8 @@ constexpr float kWaterDensity = 1000.0f;
 constexpr float kAirDensity = 1.2f;
 constexpr float kPi = 3.14159265f;
 constexpr int kSubsteps = 4;
+constexpr float kMinSlopeBase_m = 0.25f;        // about the harbour grid's spacing
+constexpr float kWaterVelocityLeak_per_s = 0.2f;
 
 void step_object(ThrownObject& o, const World& world, float dt) {
     const Terrain& terrain = world.terrain();
@@ -27,16 +29,35 @@ void step_object(ThrownObject& o, const World& world, float dt) {
     o.entered_this_tick = false;
     float h = dt / kSubsteps;
     for (int i = 0; i < kSubsteps; ++i) {
-        float sea = world.sea().height_at({o.position.x, o.position.z});
+        const SeaSurface& surface = world.sea();
+        float sea = surface.height_at({o.position.x, o.position.z});
         float sub = submerged_sphere_volume(r, sea - o.position.y);
         float wet = sub / volume;
-        float speed = std::sqrt(o.velocity.x * o.velocity.x + o.velocity.y * o.velocity.y +
-                                o.velocity.z * o.velocity.z);
+        // Surface slope across the sphere's waterline (central differences).
+        const float d = std::max(r, kMinSlopeBase_m);
+        const glm::vec2 slope((surface.height_at({o.position.x + d, o.position.z}) -
+                               surface.height_at({o.position.x - d, o.position.z})) / (2.0f * d),
+                              (surface.height_at({o.position.x, o.position.z + d}) -
+                               surface.height_at({o.position.x, o.position.z - d})) / (2.0f * d));
+        if (wet > 0.0f) {
+            // Linear shallow-water momentum, du/dt = -g grad(eta), followed along the
+            // object; the leak forgets the still-water guess made when it got wet.
+            o.water_velocity += -kGravity * slope * h;
+            o.water_velocity *= 1.0f - kWaterVelocityLeak_per_s * h;
+        } else {
+            o.water_velocity = glm::vec2(0.0f);
+        }
+        const glm::vec3 rel = o.velocity - wet * glm::vec3(o.water_velocity.x, 0.0f, o.water_velocity.y);
+        float speed = std::sqrt(rel.x * rel.x + rel.y * rel.y + rel.z * rel.z);
         // Quadratic drag in air and in water, weighted by how much is wet; a little
-        // linear damping in water stands in for added mass and wave radiation.
+        // linear damping in water stands in for added mass and wave radiation. Both act
+        // against the moving water, so a float drifts with passing waves.
         float rho = kAirDensity + (kWaterDensity - kAirDensity) * wet;
-        glm::vec3 force = -0.5f * rho * 0.47f * area * speed * o.velocity - 4.0f * wet * o.mass_kg * o.velocity;
+        glm::vec3 force = -0.5f * rho * 0.47f * area * speed * rel - 4.0f * wet * o.mass_kg * rel;
         force.y += kWaterDensity * sub * kGravity - o.mass_kg * kGravity;
+        // The sloping surface's pressure gradient on the wet part (Froude-Krylov).
+        force.x -= kWaterDensity * sub * kGravity * slope.x;
+        force.z -= kWaterDensity * sub * kGravity * slope.y;
         glm::vec3 prev = o.position;
         o.velocity += force / o.mass_kg * h;
         o.position += o.velocity * h;
@@ -134,6 +155,8 @@ uint64_t ThrownObjects::hash() const {
         h.f32(o.density_kgm3);
         h.u32(o.age_ticks);
         h.u32(uint32_t(o.in_water));
+        h.f32(o.water_velocity.x);
+        h.f32(o.water_velocity.y);
     }
     return h.value();
 }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "sim/world/Subsystem.h"
@@ -21,6 +22,9 @@ struct ThrownObject {
     bool entered_this_tick = false;
     glm::vec3 entry_position{0.0f};
     glm::vec3 entry_velocity{0.0f};
+    // The water's horizontal (orbital) velocity where the object floats, built up from
+    // the surface slope it has felt since it got wet; its drag is against this.
+    glm::vec2 water_velocity{0.0f};
     bool sinks() const { return density_kgm3 > 1000.0f; }
 };
 

@@ -21,6 +21,8 @@ Boat::Boat(const Spawn& spawn, BoatParams params) : p_(params) {
     pose_.heading_rad = spawn.heading_rad;
 }
 
+Boat::Boat(const Pose& start, BoatParams params) : p_(params), pose_(start) {}
+
 glm::vec2 Boat::hull_point(int i) const {
     float x = (i & 1) ? -0.37f * p_.length_m : 0.37f * p_.length_m;
     float z = (i & 2) ? 0.38f * p_.beam_m : -0.38f * p_.beam_m;

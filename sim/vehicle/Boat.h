@@ -27,6 +27,8 @@ struct BoatParams {
 class Boat final : public Subsystem {
 public:
     Boat(const Spawn& spawn, BoatParams params = {});
+    // Set down in any attitude (a boat dropped in, or knocked over by a wave), at rest.
+    explicit Boat(const Pose& start, BoatParams params = {});
 
     std::string_view name() const override { return "boat"; }
     void step(StepContext& ctx) override;

@@ -39,6 +39,9 @@ SplashSheet::SplashSheet(const SplashSheetParams& params) : p_(params), n_(param
         refuse("min_skirt_rings must be 1..16, got " + std::to_string(p_.min_skirt_rings));
     if (!std::isfinite(p_.ripple_depth_m) || p_.ripple_depth_m < 0.0f)
         refuse("ripple_depth_m must be >= 0, got " + num(p_.ripple_depth_m));
+    if (!std::isfinite(p_.tear_stretch) || p_.tear_stretch < 1.0f)
+        refuse("tear_stretch must be >= 1, got " + num(p_.tear_stretch));
+    if (!positive(p_.torn_drop_radius_m)) refuse("torn_drop_radius_m must be positive, got " + num(p_.torn_drop_radius_m));
     const size_t count = size_t(n_) * size_t(n_);
     pos_.assign(count, glm::vec3(0.0f));
     vel_.assign(count, glm::vec3(0.0f));
@@ -154,7 +157,16 @@ int SplashSheet::second_splash(float object_radius_m, float momentum_kgmps, Rng&
     return launched;
 }
 
+void SplashSheet::hide(size_t idx, const WaveGrid& grid, float sea_level_m) {
+    airborne_[idx] = 0;
+    vel_[idx] = glm::vec3(0.0f);
+    --flying_;
+    const glm::vec2 r = rest_xz(int(idx % size_t(n_)), int(idx / size_t(n_)));
+    pos_[idx] = {r.x, sea_level_m + grid.sample(r) - p_.hidden_depth_m, r.y};
+}
+
 void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples) {
+    torn_.clear();
     if (flying_ == 0) return;  // nothing to show: hidden vertices need not follow
     const float g = p_.gravity_mps2;
     for (size_t idx = 0; idx < airborne_.size(); ++idx) {
@@ -165,12 +177,29 @@ void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::v
         p += v * dt;
         if (v.y < 0.0f && p.y < sea_level_m + grid.sample({p.x, p.z})) {
             ripples.push_back({{p.x, p.z}, p_.ripple_depth_m});
-            airborne_[idx] = 0;
-            v = glm::vec3(0.0f);
-            --flying_;
-            const glm::vec2 r = rest_xz(int(idx % size_t(n_)), int(idx / size_t(n_)));
-            p = {r.x, sea_level_m + grid.sample(r) - p_.hidden_depth_m, r.y};
+            hide(idx, grid, sea_level_m);
         }
+    }
+    // Torn off: no airborne neighbour within reach, so no triangle of the film holds it
+    // (a lone vertex would otherwise fly on as an invisible point, or a dot). All are
+    // found before any is hidden, so the order of the scan does not matter.
+    const float reach = p_.tear_stretch * p_.spacing_m;
+    const size_t n = size_t(n_);
+    auto holds = [&](size_t a, size_t b) {
+        const glm::vec3 d = pos_[b] - pos_[a];
+        return airborne_[b] && d.x * d.x + d.y * d.y + d.z * d.z <= reach * reach;
+    };
+    tearing_.clear();
+    for (size_t idx = 0; idx < airborne_.size(); ++idx) {
+        if (!airborne_[idx]) continue;
+        const size_t i = idx % n, j = idx / n;
+        const bool held = (i > 0 && holds(idx, idx - 1)) || (i + 1 < n && holds(idx, idx + 1)) ||
+                          (j > 0 && holds(idx, idx - n)) || (j + 1 < n && holds(idx, idx + n));
+        if (!held) tearing_.push_back(idx);
+    }
+    for (size_t idx : tearing_) {
+        torn_.push_back({pos_[idx], vel_[idx]});
+        hide(idx, grid, sea_level_m);
     }
     // Hidden vertices next to airborne ones follow the surface: they shape the normals
     // at the torn edge of the film. The rest are never drawn.

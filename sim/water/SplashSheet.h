@@ -31,6 +31,17 @@ struct SplashSheetParams {
     float max_speed_mps = 8.0f;    // cap for huge momenta (the boat): about 3 m high
     float gravity_mps2 = 9.81f;
     float ripple_depth_m = 0.0003f; // wave-grid push where a vertex (d x d of film) falls back in
+    // A vertex further than tear_stretch spacings from every airborne neighbour has torn
+    // off the film (the renderer drops triangles stretched as far): it leaves the
+    // sheet as a droplet of torn_drop_radius_m, a scrap of film larger than the spray.
+    float tear_stretch = 12.0f;
+    float torn_drop_radius_m = 0.03f;
+};
+
+// A vertex that tore off the film this step, to fly on as a droplet.
+struct TornOff {
+    glm::vec3 position{0.0f};
+    glm::vec3 velocity{0.0f};
 };
 
 // Something fell back into the water here: the caller pushes the wave grid.
@@ -97,12 +108,15 @@ public:
                       float sea_level_m);
 
     // Ballistic flight under gravity; a vertex that falls back below the surface hides
-    // again at its rest point and adds a Ripple where it fell. Hidden vertices follow
-    // the surface while the sheet is active.
+    // again at its rest point and adds a Ripple where it fell, one that has torn off
+    // hides and is listed in torn(). Hidden vertices follow the surface while the
+    // sheet is active.
     void step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples);
+    const std::vector<TornOff>& torn() const { return torn_; }  // in the last step, in index order
 
 private:
     void launch(size_t idx, glm::vec3 velocity, const WaveGrid& grid, float sea_level_m);
+    void hide(size_t idx, const WaveGrid& grid, float sea_level_m);
 
     SplashSheetParams p_;
     int n_;
@@ -110,6 +124,8 @@ private:
     std::vector<glm::vec3> pos_, vel_;
     std::vector<uint8_t> airborne_;
     int flying_ = 0;
+    std::vector<TornOff> torn_;
+    std::vector<size_t> tearing_;  // scratch
 };
 
 }  // namespace sim

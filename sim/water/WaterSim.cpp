@@ -235,7 +235,10 @@ void WaterSim::step(StepContext& ctx) {
     if (const Boat* b = world.find<Boat>()) boat(*b, ctx.tick);
 
     grid_.step(ctx.jobs);
-    for (SplashSheet& s : sheets_) s.step(dt_, grid_, sea_level_m_, ripples_);
+    for (SplashSheet& s : sheets_) {
+        s.step(dt_, grid_, sea_level_m_, ripples_);
+        for (const TornOff& t : s.torn()) spray_.emit({t.position, t.velocity, params_.sheet.torn_drop_radius_m, 0.0f});
+    }
     spray_.step(dt_, grid_, sea_level_m_, ripples_, &ctx.jobs);
     // What fell back in rings the water (seed 4.4), in a fixed order.
     for (const Ripple& r : ripples_) grid_.push(r.xz, grid_.spacing(), r.depth_m);

@@ -38,7 +38,7 @@ WaveGrid::WaveGrid(const WaveGridParams& p, float dt_s) {
         refuse("wave_speed_mps must be positive, got " + num(p.wave_speed_mps));
     if (!std::isfinite(dt_s) || dt_s <= 0.0f) refuse("time step must be positive, got " + num(dt_s) + " s");
     if (!(p.damping_per_s >= 0.0f && p.damping_per_s < 1.0f))
-        refuse("damping_per_s is the fraction of wave motion lost per second and must be in [0, 1), got " +
+        refuse("damping_per_s is the fraction of wave energy lost per second and must be in [0, 1), got " +
                num(p.damping_per_s));
     if (!std::isfinite(p.origin_xz.x) || !std::isfinite(p.origin_xz.y)) refuse("origin_xz must be finite");
     const double c = double(p.wave_speed_mps) * p.wave_speed_mps * dt_s * dt_s / (double(p.spacing_m) * p.spacing_m);
@@ -50,7 +50,15 @@ WaveGrid::WaveGrid(const WaveGridParams& p, float dt_s) {
     h_ = p.spacing_m;
     origin_ = p.origin_xz;
     c_ = float(c);
+    // Damping drags on the surface's velocity, y[n] - y[n-1]: with keep = (1 - d)^dt of
+    // it left each step, every wave's energy shrinks by 1 - d per second. A factor on
+    // the whole update instead pulls every height back to 0 as hard as the waves are
+    // damped, a restoring term that makes metre-long waves ring in place rather than
+    // travel. The water the pushes take away still has to come back: the least pull
+    // that returns the mean level without overshoot, (1 - sqrt(keep))^2, whose ~0.14
+    // rad/s is far below any wave's frequency.
     damp_ = float(std::pow(1.0 - double(p.damping_per_s), double(dt_s)));
+    pull_ = (1.0f - std::sqrt(damp_)) * (1.0f - std::sqrt(damp_));
     const size_t n = size_t(size_) * size_t(size_);
     cur_.assign(n, 0.0f);
     prev_.assign(n, 0.0f);
@@ -68,7 +76,7 @@ void WaveGrid::rebuild_coefficients() {
         for (int i = 0; i < n; ++i) {
             size_t idx = size_t(j) * n + i;
             int k = int(water(i - 1, j)) + int(water(i + 1, j)) + int(water(i, j - 1)) + int(water(i, j + 1));
-            centre_weight_[idx] = 2.0f - float(k) * c_;
+            centre_weight_[idx] = 1.0f + damp_ - pull_ - float(k) * c_;
             if (land_[idx]) row_has_land[size_t(j)] = 1;
         }
     for (int j = 0; j < n; ++j) {
@@ -83,8 +91,10 @@ void WaveGrid::step_rows(size_t row_begin, size_t row_end) {
     const size_t n = size_t(size_);
     const float* __restrict y = cur_.data();
     float* __restrict out = prev_.data();  // holds y[n-1]; becomes y[n+1] in place, cell by cell
-    const float c = c_, damp = damp_;
-    const float w3 = 2.0f - 3.0f * c, w4 = 2.0f - 4.0f * c;
+    // y[n+1] = c sum + (2 - k c) y[n] - y[n-1] - (1 - keep)(y[n] - y[n-1]) - pull y[n]
+    //        = c sum + (1 + keep - pull - k c) y[n] - keep y[n-1]
+    const float c = c_, keep = damp_;
+    const float w3 = 1.0f + keep - pull_ - 3.0f * c, w4 = 1.0f + keep - pull_ - 4.0f * c;
     for (size_t j = row_begin; j < row_end; ++j) {
         const size_t row = j * n;
         if (!row_general_[j]) {
@@ -93,10 +103,10 @@ void WaveGrid::step_rows(size_t row_begin, size_t row_end) {
             const float* __restrict up = r - n;
             const float* __restrict dn = r + n;
             float* __restrict o = out + row;
-            o[0] = flushed(damp * (c * (r[1] + (up[0] + dn[0])) + w3 * r[0] - o[0]));
+            o[0] = flushed(c * (r[1] + (up[0] + dn[0])) + w3 * r[0] - keep * o[0]);
             for (size_t i = 1; i + 1 < n; ++i)
-                o[i] = flushed(damp * (c * ((r[i - 1] + r[i + 1]) + (up[i] + dn[i])) + w4 * r[i] - o[i]));
-            o[n - 1] = flushed(damp * (c * (r[n - 2] + (up[n - 1] + dn[n - 1])) + w3 * r[n - 1] - o[n - 1]));
+                o[i] = flushed(c * ((r[i - 1] + r[i + 1]) + (up[i] + dn[i])) + w4 * r[i] - keep * o[i]);
+            o[n - 1] = flushed(c * (r[n - 2] + (up[n - 1] + dn[n - 1])) + w3 * r[n - 1] - keep * o[n - 1]);
             continue;
         }
         for (size_t i = 0; i < n; ++i) {
@@ -111,7 +121,7 @@ void WaveGrid::step_rows(size_t row_begin, size_t row_end) {
             float rt = i + 1 < n ? y[idx + 1] : 0.0f;
             float u = j > 0 ? y[idx - n] : 0.0f;
             float d = j + 1 < n ? y[idx + n] : 0.0f;
-            out[idx] = flushed(damp * (c * ((l + rt) + (u + d)) + centre_weight_[idx] * y[idx] - out[idx]));
+            out[idx] = flushed(c * ((l + rt) + (u + d)) + centre_weight_[idx] * y[idx] - keep * out[idx]);
         }
     }
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The harbour's wave-height grid (seed 003, chapter 3; specs/water.md): an explicit
 // central-difference step of the 2D wave equation with the seed's free boundary (a
-// missing neighbour is left out and the centre weight becomes 2 - k c), plus damping.
+// missing neighbour is left out and the centre weight becomes 2 - k c), plus damping
+// of the surface's velocity.
 // Land cells are pinned at 0 and count as missing neighbours, so the quay reflects.
 #include <cstddef>
 #include <cstdint>
@@ -19,7 +20,7 @@ struct WaveGridParams {
     float spacing_m = 0.5f;              // h
     glm::vec2 origin_xz{-40.0f, 1.0f};   // world xz of cell (0,0); cell (i,j) is at origin + (i, j) * spacing
     float wave_speed_mps = 2.5f;         // v
-    float damping_per_s = 0.25f;         // fraction of wave motion lost per second (0 = none)
+    float damping_per_s = 0.25f;         // fraction of wave energy lost per second (0 = none)
 };
 
 class WaveGrid {
@@ -37,7 +38,7 @@ public:
     float spacing() const { return h_; }
     glm::vec2 origin() const { return origin_; }
     float courant() const { return c_; }  // c = v^2 dt^2 / h^2
-    float damping_factor_per_step() const { return damp_; }
+    float damping_factor_per_step() const { return damp_; }  // keep: what stays of the surface's velocity
 
     // size*size, row-major: index j*size + i (i along x, j along z); height above sea level.
     const std::vector<float>& heights() const { return cur_; }
@@ -69,13 +70,13 @@ private:
     glm::vec2 origin_;
     float c_;
     float damp_;
+    float pull_;  // back towards sea level, per step
     std::vector<float> cur_, prev_;   // y[n], y[n-1]; step writes y[n+1] over y[n-1], then swaps
     std::vector<uint8_t> land_;
     // Rows that touch the grid edge or land take the general path with per-cell weights;
     // the rest run a branch-free loop with the interior weight 2 - 4c.
     std::vector<uint8_t> row_general_;
-    std::vector<float> centre_weight_;  // 2 - k c per cell
-    std::vector<float> keep_;           // damping on water, 0 on land
+    std::vector<float> centre_weight_;  // 1 + keep - pull - k c per cell (2 - k c without damping)
 };
 
 }  // namespace sim

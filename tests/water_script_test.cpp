@@ -1,0 +1,82 @@
+// replays/harbour_boat.script: its checkpoint frames are meant to catch the splashes
+// its comment names. Runs the script's sim (no rendering) and checks which splash is
+// in the air at each checkpoint, so a retimed throw or a changed splash shows up here
+// rather than in a frame nobody looked at.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "game/level/LevelLoader.h"
+#include "game/replay/InputScript.h"
+#include "sim/water/WaterSim.h"
+#include "sim/world/World.h"
+
+namespace {
+
+// What started the splash on one sheet: a stone's first or second, or a float's first.
+enum class Splash { StoneFirst, StoneSecond, FloatFirst };
+
+struct SheetSplash {
+    Splash kind;
+    uint32_t started_tick;
+};
+
+std::string name(Splash s) {
+    switch (s) {
+        case Splash::StoneFirst: return "stone first";
+        case Splash::StoneSecond: return "stone second";
+        case Splash::FloatFirst: return "float first";
+    }
+    return "?";
+}
+
+TEST(HarbourBoatScript, CheckpointsCatchTheSplashesTheyName) {
+    const game::InputScript script =
+        game::load_script(std::string(SPINDRIFT_TEST_DATA) + "/../../replays/harbour_boat.script");
+    sim::World world(game::load_level(script.level).sim);
+    const sim::WaterSim& water = world.get<sim::WaterSim>();
+    // Per checkpoint, the splash it is there for, and at most how many ticks after that
+    // splash started the frame may come (the crown and jet are short-lived).
+    const std::map<uint32_t, std::pair<Splash, uint32_t>> wanted = {
+        {682, {Splash::StoneFirst, 12}}, {695, {Splash::StoneSecond, 8}}, {796, {Splash::FloatFirst, 8}},
+        {941, {Splash::StoneFirst, 12}}, {954, {Splash::StoneSecond, 8}},
+    };
+    for (const auto& [tick, _] : wanted)
+        ASSERT_NE(std::find(script.checkpoints.begin(), script.checkpoints.end(), tick), script.checkpoints.end())
+            << "checkpoint " << tick << " is not in the script";
+
+    std::vector<SheetSplash> on_sheet(water.sheets().size(), {Splash::StoneFirst, 0});
+    std::vector<bool> started(water.sheets().size(), false);
+    for (uint32_t t = 0; t < script.end_tick; ++t) {
+        world.step(script.inputs[t]);
+        // First splashes come in the order of this tick's water entries.
+        size_t entry = 0;
+        for (const sim::SplashEvent& e : water.splashes()) {
+            Splash kind = Splash::StoneSecond;
+            if (e.kind == sim::SplashEvent::Kind::First) {
+                ASSERT_LT(entry, world.events().water_entries.size());
+                kind = world.events().water_entries[entry++].sinks ? Splash::StoneFirst : Splash::FloatFirst;
+            }
+            on_sheet[size_t(e.sheet)] = {kind, t};
+            started[size_t(e.sheet)] = true;
+        }
+        if (water.bow_sheet() >= 0) started[size_t(water.bow_sheet())] = false;  // bow spray, not a throw
+        auto w = wanted.find(t);
+        if (w == wanted.end()) continue;
+        const auto [kind, within] = w->second;
+        std::string seen;
+        bool caught = false;
+        for (size_t k = 0; k < water.sheets().size(); ++k) {
+            if (!started[k] || water.sheets()[k].airborne_count() == 0) continue;
+            seen += " " + name(on_sheet[k].kind) + " from " + std::to_string(on_sheet[k].started_tick);
+            caught = caught || (on_sheet[k].kind == kind && t - on_sheet[k].started_tick <= within);
+        }
+        EXPECT_TRUE(caught) << "checkpoint " << t << " wants a " << name(kind) << " splash at most " << within
+                            << " ticks old; in the air:" << (seen.empty() ? " nothing" : seen);
+    }
+}
+
+}  // namespace
