@@ -44,6 +44,10 @@ vec3 background(vec3 p, vec3 d) {
     vec2 px = project_to_pixel(q);
     if (any(lessThan(px, vec2(u_background_rect.xy))) || any(greaterThanEqual(px, vec2(u_background_rect.zw))))
         return sky(d);
+    // A steep ray can land on what stands in front of the liquid (the hood again): the
+    // scene straight behind the point is the better guess then.
+    if (scene_distance(px) < -p.z)
+        px = clamp(project_to_pixel(p), vec2(u_background_rect.xy), vec2(u_background_rect.zw - 1));
     return texelFetch(u_background, ivec2(px), 0).rgb;
 }
 
