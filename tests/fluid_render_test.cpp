@@ -218,12 +218,12 @@ TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
     }
     EXPECT_GT(drop_pixels, 10);  // the rectangle grew to hold the flying drops
     // Without the splash layer, the pixels where drops fly change (to the body or the
-    // scene behind them); the rest of the frame does not.
+    // scene behind them).
     effects::FluidView body_only = view;
     body_only.splash.clear();
     const game::ImageRGBA8 no_drops = stage_->render(true, &body_only);
     maybe_write_png("tank_splash_emptied", no_drops);
-    EXPECT_GT(pixels_differing(splash, no_drops, 12.0f), 100);
+    EXPECT_GT(pixels_differing(splash, no_drops, 12.0f), 100);  // 175 here
     int drops_seen = 0, drops_on_screen = 0;
     for (const sim::FluidEllipsoid& e : view.splash) {
         glm::vec4 c = stage_->camera.view_proj * glm::vec4(e.centre, 1.0f);
@@ -238,7 +238,7 @@ TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
     }
     ASSERT_GT(drops_on_screen, 10);
     // Most drops show; some are hidden behind the body or each other.
-    EXPECT_GT(drops_seen, drops_on_screen / 2) << drops_seen << " of " << drops_on_screen;
+    EXPECT_GT(drops_seen, drops_on_screen / 2) << drops_seen << " of " << drops_on_screen;  // 22 of 25 here
 }
 
 TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
@@ -265,11 +265,12 @@ TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
         stage_->fluid.set_smoothing(effects::FluidSmoothing::defaults(m));
         images.push_back(stage_->render(true));
         maybe_write_png("tank_" + std::string(effects::smoothing_name(m)), images.back());
-        EXPECT_GT(pixels_differing(without, images.back(), 6.0f), 1500) << effects::smoothing_name(m);
+        // About 10500 pixels here, the glass included.
+        EXPECT_GT(pixels_differing(without, images.back(), 6.0f), 5000) << effects::smoothing_name(m);
     }
     for (size_t a = 0; a < images.size(); ++a)
         for (size_t b = a + 1; b < images.size(); ++b)
-            EXPECT_GT(pixels_differing(images[a], images[b], 6.0f), 100) << "methods " << a << " and " << b;
+            EXPECT_GT(pixels_differing(images[a], images[b], 6.0f), 1000) << "methods " << a << " and " << b;  // 5200-5400
 }
 
 }  // namespace
