@@ -2,11 +2,13 @@
 // (refracted, tinted), its work confined to the tank's rectangle, a stone's splash
 // drawn as its own layer, and bad smoothing settings refused. Set
 // SPINDRIFT_FLUID_PNG_DIR to write the frames as PNGs.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -63,11 +65,13 @@ struct Stage {
         output.check_complete();
     }
 
-    game::ImageRGBA8 render(bool with_fluid) {
+    // The world's tank, or (with `view`) the given one.
+    game::ImageRGBA8 render(bool with_fluid, const effects::FluidView* view = nullptr) {
         effects::FrameContext frame{world, camera, scene, {output.id(), kWidth, kHeight}, 0.0};
         for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy, &water})
             p->render(frame);
-        if (with_fluid) fluid.render(frame);
+        if (with_fluid && view) fluid.draw(frame, *view);
+        else if (with_fluid) fluid.render(frame);
         tonemap.render(frame);
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
         return game::read_framebuffer_rgba8(output.id(), kWidth, kHeight);
@@ -96,6 +100,18 @@ void maybe_write_png(const std::string& name, const game::ImageRGBA8& img) {
 glm::vec3 pixel(const game::ImageRGBA8& img, int x, int y) {
     const uint8_t* p = &img.pixels[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
     return {float(p[0]), float(p[1]), float(p[2])};
+}
+
+float difference(const game::ImageRGBA8& a, const game::ImageRGBA8& b, int x, int y) {
+    return glm::length(pixel(a, x, y) - pixel(b, x, y));
+}
+
+// Pixels where two frames differ by more than `threshold` (of 0..255 per channel).
+int pixels_differing(const game::ImageRGBA8& a, const game::ImageRGBA8& b, float threshold) {
+    int n = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) n += difference(a, b, x, y) > threshold ? 1 : 0;
+    return n;
 }
 
 class FluidRenderTest : public ::testing::Test {
@@ -158,6 +174,31 @@ TEST_F(FluidRenderTest, TheTankRefractsAndTintsOnlyInsideItsRectangle) {
     EXPECT_GT(tinted.y + tinted.z, 60.0f);  // not black
 }
 
+TEST_F(FluidRenderTest, TheLiquidBendsTheBackgroundBeyondTheGlassTint) {
+    // A clear liquid, so what changes is where each pixel looks, not its colour.
+    stage_->fluid.look().absorption_per_m = 0.0f;
+    const game::ImageRGBA8 without = stage_->render(false);
+    stage_->fluid.look().ior = 1.0f;
+    const game::ImageRGBA8 unbent = stage_->render(true);
+    stage_->fluid.look().ior = 1.33f;
+    const game::ImageRGBA8 bent = stage_->render(true);
+    maybe_write_png("tank_ior_1_00", unbent);
+    maybe_write_png("tank_ior_1_33", bent);
+    // With the index of air the rays go straight through: the scene behind, under the
+    // glass's tint and faint mirror (and Schlick's grazing reflection at the rim). Both
+    // frames have the same glass, so what water's index changes beyond the most the
+    // glass changes (its 95th percentile) is background moved to other pixels.
+    std::vector<float> glass;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (float d = difference(without, unbent, x, y); d > 1.0f) glass.push_back(d);
+    ASSERT_GT(glass.size(), 2000u);
+    std::nth_element(glass.begin(), glass.begin() + std::ptrdiff_t(glass.size() * 95 / 100), glass.end());
+    const float tint = std::max(glass[glass.size() * 95 / 100], 12.0f);
+    const int displaced = pixels_differing(unbent, bent, tint);
+    EXPECT_GT(displaced, 1000) << "beyond the glass's " << tint;  // 2719 here
+}
+
 TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
     stage_->world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.2f, 30.0f}, {0, 0, 1}, {0, 0, 0});
     // Until the drops are up (at most a second).
@@ -176,9 +217,32 @@ TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
         drop_pixels += (px.x >= r.x && px.x < r.z && px.y >= r.y && px.y < r.w) ? 1 : 0;
     }
     EXPECT_GT(drop_pixels, 10);  // the rectangle grew to hold the flying drops
+    // Without the splash layer, the pixels where drops fly change (to the body or the
+    // scene behind them).
+    effects::FluidView body_only = view;
+    body_only.splash.clear();
+    const game::ImageRGBA8 no_drops = stage_->render(true, &body_only);
+    maybe_write_png("tank_splash_emptied", no_drops);
+    EXPECT_GT(pixels_differing(splash, no_drops, 12.0f), 100);  // 175 here
+    int drops_seen = 0, drops_on_screen = 0;
+    for (const sim::FluidEllipsoid& e : view.splash) {
+        glm::vec4 c = stage_->camera.view_proj * glm::vec4(e.centre, 1.0f);
+        glm::ivec2 px(glm::floor((glm::vec2(c) / c.w * 0.5f + 0.5f) * glm::vec2(kWidth, kHeight)));
+        if (px.x < 1 || px.y < 1 || px.x >= kWidth - 1 || px.y >= kHeight - 1) continue;
+        ++drops_on_screen;
+        bool changed = false;  // in the drop's pixel or a neighbour (image rows are top-down)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                changed = changed || difference(splash, no_drops, px.x + dx, kHeight - 1 - px.y + dy) > 12.0f;
+        drops_seen += changed ? 1 : 0;
+    }
+    ASSERT_GT(drops_on_screen, 10);
+    // Most drops show; some are hidden behind the body or each other.
+    EXPECT_GT(drops_seen, drops_on_screen / 2) << drops_seen << " of " << drops_on_screen;  // 22 of 25 here
 }
 
 TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
+    stage_->fluid.set_smoothing(effects::FluidSmoothing::defaults(effects::SmoothingMethod::Bilateral));
     effects::FluidSmoothing s;
     s.kernel_size = 8;
     EXPECT_THROW(stage_->fluid.set_smoothing(s), std::invalid_argument);
@@ -188,13 +252,25 @@ TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
     s.iterations = 0;
     EXPECT_THROW(stage_->fluid.set_smoothing(s), std::invalid_argument);
     EXPECT_THROW(effects::smoothing_method("gaussian"), std::invalid_argument);
+    // A refused setting leaves the pass as it was.
+    EXPECT_EQ(stage_->fluid.smoothing().method, effects::SmoothingMethod::Bilateral);
+    EXPECT_EQ(stage_->fluid.smoothing().kernel_size, 7);
+    EXPECT_EQ(stage_->fluid.smoothing().iterations, 22);
+    // Each of the three methods draws the liquid, and each smooths it its own way.
+    const game::ImageRGBA8 without = stage_->render(false);
+    std::vector<game::ImageRGBA8> images;
     for (auto m : {effects::SmoothingMethod::PlaneFit, effects::SmoothingMethod::Bilateral,
                    effects::SmoothingMethod::NarrowRange}) {
         EXPECT_EQ(effects::smoothing_method(effects::smoothing_name(m)), m);
         stage_->fluid.set_smoothing(effects::FluidSmoothing::defaults(m));
-        const game::ImageRGBA8 img = stage_->render(true);
-        maybe_write_png("tank_" + std::string(effects::smoothing_name(m)), img);
+        images.push_back(stage_->render(true));
+        maybe_write_png("tank_" + std::string(effects::smoothing_name(m)), images.back());
+        // About 10500 pixels here, the glass included.
+        EXPECT_GT(pixels_differing(without, images.back(), 6.0f), 5000) << effects::smoothing_name(m);
     }
+    for (size_t a = 0; a < images.size(); ++a)
+        for (size_t b = a + 1; b < images.size(); ++b)
+            EXPECT_GT(pixels_differing(images[a], images[b], 6.0f), 1000) << "methods " << a << " and " << b;  // 5200-5400
 }
 
 }  // namespace

@@ -198,6 +198,10 @@ TEST(AnisotropicKernels, IsolatedParticlesAreSpheresAndASurfaceFlattensThem) {
     EXPECT_LE(*std::max_element(lengths, lengths + 3) / lengths[thin], 4.0f + 1e-3f);
 }
 
+// A stone of 25 cm dropped from 4.5 m above the test tank's floor, over its middle.
+constexpr sim::ThrowKind kBigStone{0.25f, 2600.0f, 0.0f};
+constexpr glm::vec3 kAboveTank{24.0f, 5.5f, 30.0f};
+
 TEST(FluidTank, StandsOnItsSpotAndAThrownStoneSplashesIt) {
     sim::World world(tank_level());
     const sim::FluidTank& tank = world.get<sim::FluidTank>();
@@ -206,12 +210,15 @@ TEST(FluidTank, StandsOnItsSpotAndAThrownStoneSplashesIt) {
     EXPECT_EQ(origin, glm::vec3(24.0f - 0.6f, 1.0f, 30.0f - 0.6f));
     const float calm_top = highest(tank.fluid());
     const size_t calm_splash = tank.fluid().splash_count();
-    // Dropped from above the tank's middle.
-    world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.5f, 30.0f}, {0, 0, 1}, {0, 0, 0});
+    // Dropped from above the tank's middle. The highest drop is one particle's chaotic
+    // flight, so the stone is big and fast (gcc and clang builds differ in the last
+    // bits) and the watch lasts past the second crest: it rose 0.28 m and threw 143
+    // drops here, against the 0.1 m and 40 asked.
+    world.get<sim::ThrownObjects>().launch(kBigStone, kAboveTank, {0, 0, 1}, {0, 0, 0});
     int inside = 0;
     float top = 0.0f;
     size_t splash = 0;
-    for (int t = 0; t < 60; ++t) {
+    for (int t = 0; t < 90; ++t) {
         world.step({});
         inside = std::max(inside, tank.objects_inside());
         top = std::max(top, highest(tank.fluid()));
@@ -219,7 +226,7 @@ TEST(FluidTank, StandsOnItsSpotAndAThrownStoneSplashesIt) {
     }
     EXPECT_EQ(inside, 1);
     EXPECT_GT(top, calm_top + 0.1f);
-    EXPECT_GT(splash, calm_splash + 20u);
+    EXPECT_GT(splash, calm_splash + 40u);
 }
 
 TEST(FluidTank, SleepsWhenCalmAndWakesForAThrownStone) {
@@ -233,9 +240,11 @@ TEST(FluidTank, SleepsWhenCalmAndWakesForAThrownStone) {
     EXPECT_EQ(tank.fluid().positions(), before);
     // A stone dropped into it wakes it, and it splashes.
     const float calm_top = highest(tank.fluid());
+    // A 20 cm stone from 2.5 m (the big one above kept the tank awake past a minute),
+    // watched past the second crest: it rose 0.21 m here.
     world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.5f, 30.0f}, {0, 0, 1}, {0, 0, 0});
     float top = 0.0f;
-    for (int k = 0; k < 60; ++k) {
+    for (int k = 0; k < 90; ++k) {
         world.step({});
         top = std::max(top, highest(tank.fluid()));
     }

@@ -32,16 +32,23 @@ float scene_distance(vec2 px) {
 vec3 sky(vec3 view_dir) { return sky_radiance(u_view_to_world * view_dir, false); }
 
 // What a ray from p along d sees behind the liquid: the scene where the ray reaches
-// the scene's depth (one step estimate), or the sky off screen.
+// the scene's depth (one step estimate), or the sky. A ray turned back towards the eye
+// would find what lies in front of the tank on screen (the car's hood), and one landing
+// outside the copied rectangle would smear its edge: both see the sky instead.
 vec3 background(vec3 p, vec3 d) {
+    if (d.z >= 0.0) return sky(d);
     float ahead = max(scene_distance(project_to_pixel(p)) + p.z, 0.0);
-    float s = min(ahead / max(-d.z, 0.25), 40.0);
+    float s = min(ahead / -d.z, 40.0);
     vec3 q = p + d * s;
     if (q.z > -0.05) return sky(d);
     vec2 px = project_to_pixel(q);
-    if (any(lessThan(px, vec2(0.0))) || any(greaterThanEqual(px, u_viewport))) return sky(d);
-    ivec2 ip = clamp(ivec2(px), u_background_rect.xy, u_background_rect.zw - 1);
-    return texelFetch(u_background, ip, 0).rgb;
+    if (any(lessThan(px, vec2(u_background_rect.xy))) || any(greaterThanEqual(px, vec2(u_background_rect.zw))))
+        return sky(d);
+    // A steep ray can land on what stands in front of the liquid (the hood again): the
+    // scene straight behind the point is the better guess then.
+    if (scene_distance(px) < -p.z)
+        px = clamp(project_to_pixel(p), vec2(u_background_rect.xy), vec2(u_background_rect.zw - 1));
+    return texelFetch(u_background, ivec2(px), 0).rgb;
 }
 
 // Surfaces: 0 body front, 1 body back, 2 splash front, 3 splash back (samplers cannot
@@ -126,9 +133,11 @@ bool tank_hit(vec3 ray, out float t_near, out float t_far) {
     return t_far > max(t_near, 0.0);
 }
 
-// 1 on the box's edges (two coordinates near a face), 0 elsewhere.
-float edge(vec3 p) {
-    vec3 near_face = step(min(p, u_tank_size - p), vec3(u_frame_width));
+// 1 on the box's edges (two coordinates near a face), 0 elsewhere; at least 1.5 pixels
+// wide at view distance `z`, so a far tank's frame does not break up.
+float edge(vec3 p, float z) {
+    float pixel_m = 2.0 * z / (u_proj[1][1] * u_viewport.y);
+    vec3 near_face = step(min(p, u_tank_size - p), vec3(max(u_frame_width, 1.5 * pixel_m)));
     return step(1.5, near_face.x + near_face.y + near_face.z);
 }
 
@@ -167,7 +176,12 @@ void main() {
             bool valid;
             float back_z = map_at(back, pos, valid);
             float t;
-            bool found = secant(back, pos, dir, valid ? max(back_z + pos.z, 0.0) / max(-dir.z, 0.25) : u_epsilon, t);
+            float guess = valid ? max(back_z + pos.z, 0.0) / max(-dir.z, 0.25) : u_epsilon;
+            bool found = secant(back, pos, dir, guess, t);
+            // Not converged (the ray left the map or the search oscillated): its last
+            // estimate may be anywhere, so the ray leaves where the back surface lies
+            // behind the entry point.
+            if (!found) t = guess;
             pos += dir * t;
             thr *= exp(-u_absorption * t);
             // Out of it; total internal reflection sends the ray back in, which this
@@ -202,12 +216,12 @@ void main() {
     if (tank_hit(ray, t_near, t_far) && t_near > 0.0 && t_near < scene_z) {
         vec3 p_near = (u_view_to_tank * vec4(ray * t_near, 1.0)).xyz;
         vec3 d = normalize(ray);
-        if (!(hb || hs) && t_far < scene_z && edge((u_view_to_tank * vec4(ray * t_far, 1.0)).xyz) > 0.5)
+        if (!(hb || hs) && t_far < scene_z && edge((u_view_to_tank * vec4(ray * t_far, 1.0)).xyz, t_far) > 0.5)
             colour = mix(colour, vec3(0.05, 0.055, 0.06), 0.8);
         float cos_i = abs(d.z);  // about the view axis: the glass is thin and the mirror faint
         float f = 0.04 + 0.2 * pow(1.0 - cos_i, 5.0);
         colour = colour * vec3(0.93, 0.97, 0.96) + f * sky(reflect(d, vec3(0.0, 0.0, 1.0)));
-        if (edge(p_near) > 0.5) colour = vec3(0.09, 0.1, 0.11) + 0.15 * sky(vec3(0.0, 1.0, 0.0));
+        if (edge(p_near, t_near) > 0.5) colour = vec3(0.09, 0.1, 0.11) + 0.15 * sky(vec3(0.0, 1.0, 0.0));
     }
     o_colour = vec4(colour, 1.0);
 }
