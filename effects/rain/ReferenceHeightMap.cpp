@@ -21,8 +21,7 @@ ReferenceHeightMap::ReferenceHeightMap(int width, int height)
     : width_(width),
       height_(height),
       iso_(gl::Program::from_files("rain.reference", {"common/fullscreen.vert.glsl", "rain/reference.frag.glsl"})),
-      normals_(gl::Program::from_files("rain.reference_normals",
-                                       {"common/fullscreen.vert.glsl", "rain/reference_normals.frag.glsl"})) {
+      normals_(gl::Program::from_files("rain.normals", {"common/fullscreen.vert.glsl", "rain/normals.frag.glsl"})) {
     heights_ = gl::Texture::create_2d("rain.reference.heights", GL_R32F, width, height);
     surface_ = gl::Texture::create_2d("rain.reference.surface", GL_RGBA16F, width, height);
     for (gl::Texture* t : {&heights_, &surface_}) {
