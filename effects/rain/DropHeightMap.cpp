@@ -15,6 +15,7 @@ DropHeightMap::DropHeightMap(int width, int height)
       height_(height),
       splat_(gl::Program::from_files("rain.splat", {"rain/splat.vert.glsl", "rain/splat.frag.glsl"})),
       shape_(gl::Program::from_files("rain.shape", {"common/fullscreen.vert.glsl", "rain/shape.frag.glsl"})),
+      normals_(gl::Program::from_files("rain.normals", {"common/fullscreen.vert.glsl", "rain/normals.frag.glsl"})),
       vao_(gl::VertexArray::create("rain.splat")) {
     // N(h) = 1 / (1 + (h/R)^4) over h/R in [0, kMetaballReach], scaled per drop.
     std::vector<float> profile(kProfileTexels);
@@ -29,13 +30,17 @@ DropHeightMap::DropHeightMap(int width, int height)
 
     sums_ = gl::Texture::create_2d("rain.sums", GL_RGBA16F, width, height);
     surface_ = gl::Texture::create_2d("rain.surface", GL_RGBA16F, width, height);
-    for (gl::Texture* t : {&sums_, &surface_}) {
+    heights_ = gl::Texture::create_2d("rain.heights", GL_R32F, width, height);
+    for (gl::Texture* t : {&sums_, &heights_, &surface_}) {
         t->set_filter(GL_LINEAR, GL_LINEAR);
         t->set_wrap(GL_CLAMP_TO_EDGE);
     }
     sums_fbo_ = gl::Framebuffer::create("rain.sums");
     sums_fbo_.attach_colour(0, sums_);
     sums_fbo_.check_complete();
+    heights_fbo_ = gl::Framebuffer::create("rain.heights");
+    heights_fbo_.attach_colour(0, heights_);
+    heights_fbo_.check_complete();
     surface_fbo_ = gl::Framebuffer::create("rain.surface");
     surface_fbo_.attach_colour(0, surface_);
     surface_fbo_.check_complete();
@@ -78,11 +83,10 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         glDisable(GL_BLEND);
     }
 
-    // 2. Threshold, height (compressed if asked) and normal per texel.
-    glBindFramebuffer(GL_FRAMEBUFFER, surface_fbo_.id());
+    // 2. Threshold and height (compressed if asked) per texel.
+    glBindFramebuffer(GL_FRAMEBUFFER, heights_fbo_.id());
     shape_.use();
     shape_.set("u_sums", 0);
-    shape_.set("u_texel_mm", glm::vec2(glass_size_m.x * 1000.0f / float(width_), glass_size_m.y * 1000.0f / float(height_)));
     shape_.set("u_threshold", c.threshold);
     shape_.set("u_first_level", c.first_level);
     shape_.set("u_level_step", c.level_step);
@@ -90,6 +94,14 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     shape_.set("u_k", c.k);
     sums_.bind(0);
     gl::bind_empty_vertex_array();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    // 3. Normals.
+    glBindFramebuffer(GL_FRAMEBUFFER, surface_fbo_.id());
+    normals_.use();
+    normals_.set("u_heights", 0);
+    normals_.set("u_texel_mm", glm::vec2(glass_size_m.x * 1000.0f / float(width_), glass_size_m.y * 1000.0f / float(height_)));
+    heights_.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDepthMask(GL_TRUE);
 }

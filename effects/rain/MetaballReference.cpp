@@ -8,11 +8,11 @@ namespace effects {
 namespace {
 
 constexpr float kReach2 = kMetaballReach * kMetaballReach;
-constexpr int kTile = 16;  // texels a side of the tiles the drops are culled by
 
-float field(std::span<const RainMetaball> drops, glm::vec2 p, float z2) {
+float field(std::span<const RainMetaball> drops, std::span<const uint32_t> near, glm::vec2 p, float z2) {
     float sum = 0.0f;
-    for (const RainMetaball& d : drops) {
+    for (uint32_t k : near) {
+        const RainMetaball& d = drops[k];
         const glm::vec2 e = p - d.centre_m;
         const float q = (e.x * e.x + e.y * e.y + z2) / (d.radius_m * d.radius_m);
         if (q < kReach2) sum += 1.0f / (1.0f + q * q);
@@ -22,37 +22,52 @@ float field(std::span<const RainMetaball> drops, glm::vec2 p, float z2) {
 
 }  // namespace
 
-std::vector<SurfaceSample> reference_surface(std::span<const RainMetaball> drops, glm::vec2 glass_size_m, int width,
-                                             int height, float threshold) {
-    float reach = 0.0f;
-    for (const RainMetaball& d : drops) reach = std::max(reach, d.radius_m);
+DropTiles drops_by_tile(std::span<const RainMetaball> drops, glm::vec2 glass_size_m, int width, int height) {
+    constexpr int kTile = DropTiles::kTexels;
+    DropTiles t;
+    t.cols = (width + kTile - 1) / kTile;
+    t.rows = (height + kTile - 1) / kTile;
     const glm::vec2 texel = glass_size_m / glm::vec2(float(width), float(height));
-    std::vector<float> h(size_t(width) * size_t(height), 0.0f);
-    std::vector<RainMetaball> near;
     for (int tj = 0; tj < height; tj += kTile)
         for (int ti = 0; ti < width; ti += kTile) {
-            // Only drops whose support reaches the tile's texel centres add to its field:
-            // the same sums as over all drops, at a cost that grows with the glass's area.
             const glm::vec2 lo = (glm::vec2(float(ti), float(tj)) + 0.5f) * texel;
             const glm::vec2 hi = (glm::vec2(float(std::min(ti + kTile, width)), float(std::min(tj + kTile, height))) - 0.5f) * texel;
-            near.clear();
-            for (const RainMetaball& d : drops) {
+            const auto first = uint32_t(t.indices.size());
+            for (size_t k = 0; k < drops.size(); ++k) {
+                const RainMetaball& d = drops[k];
                 const glm::vec2 e = d.centre_m - glm::clamp(d.centre_m, lo, hi);
-                if (e.x * e.x + e.y * e.y < kReach2 * d.radius_m * d.radius_m) near.push_back(d);
+                if (e.x * e.x + e.y * e.y < kReach2 * d.radius_m * d.radius_m) t.indices.push_back(uint32_t(k));
             }
-            if (near.empty()) continue;
-            for (int j = tj; j < std::min(tj + kTile, height); ++j)
-                for (int i = ti; i < std::min(ti + kTile, width); ++i) {
-                    const glm::vec2 p = (glm::vec2(float(i), float(j)) + 0.5f) * texel;
-                    if (field(near, p, 0.0f) <= threshold) continue;
-                    // The field falls with height above the glass: bisect for the iso-surface.
-                    float lo_z = 0.0f, hi_z = kMetaballReach * reach;
-                    for (int k = 0; k < 24; ++k) {
-                        const float mid = 0.5f * (lo_z + hi_z);
-                        (field(near, p, mid * mid) > threshold ? lo_z : hi_z) = mid;
-                    }
-                    h[size_t(j) * size_t(width) + size_t(i)] = 0.5f * (lo_z + hi_z) * 1000.0f;
-                }
+            t.ranges.emplace_back(first, uint32_t(t.indices.size()) - first);
+        }
+    return t;
+}
+
+float bisection_ceiling_m(std::span<const RainMetaball> drops) {
+    float reach = 0.0f;
+    for (const RainMetaball& d : drops) reach = std::max(reach, d.radius_m);
+    return kMetaballReach * reach;
+}
+
+std::vector<SurfaceSample> reference_surface(std::span<const RainMetaball> drops, glm::vec2 glass_size_m, int width,
+                                             int height, float threshold) {
+    const float ceiling = bisection_ceiling_m(drops);
+    const glm::vec2 texel = glass_size_m / glm::vec2(float(width), float(height));
+    std::vector<float> h(size_t(width) * size_t(height), 0.0f);
+    const DropTiles tiles = drops_by_tile(drops, glass_size_m, width, height);
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i) {
+            const glm::uvec2 r = tiles.ranges[size_t(j / DropTiles::kTexels * tiles.cols + i / DropTiles::kTexels)];
+            const std::span<const uint32_t> near(tiles.indices.data() + r.x, r.y);
+            const glm::vec2 p = (glm::vec2(float(i), float(j)) + 0.5f) * texel;
+            if (field(drops, near, p, 0.0f) <= threshold) continue;
+            // The field falls with height above the glass: bisect for the iso-surface.
+            float lo_z = 0.0f, hi_z = ceiling;
+            for (int k = 0; k < kReferenceBisections; ++k) {
+                const float mid = 0.5f * (lo_z + hi_z);
+                (field(drops, near, p, mid * mid) > threshold ? lo_z : hi_z) = mid;
+            }
+            h[size_t(j) * size_t(width) + size_t(i)] = 0.5f * (lo_z + hi_z) * 1000.0f;
         }
     // Normals as the GPU path takes them: from the right and upper neighbours.
     std::vector<SurfaceSample> out(h.size());

@@ -4,11 +4,13 @@
 // N(d) = 1 / (1 + (d/R)^4) of the 3D distance to its centre on the glass, cut off at
 // kMetaballReach radii like the splats, and the water surface the iso-surface N = T
 // above the glass, found per texel by bisection on the CPU (one thread). A lone drop
-// is then exactly a hemisphere of radius R.
+// is then exactly a hemisphere of radius R. ReferenceHeightMap does the same on the GPU.
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/ext/vector_uint2.hpp>
 #include <glm/vec3.hpp>
 
 #include "effects/rain/RainView.h"
@@ -19,6 +21,22 @@ struct SurfaceSample {
     glm::vec3 normal{0.0f, 0.0f, 1.0f};  // in glass coordinates, z out of the glass
     float height_mm = 0.0f;              // 0: dry
 };
+
+// The drops whose support reaches each kTexels x kTexels tile's texel centres: the
+// same field as over all drops, at a cost that grows with the glass's area. Tile
+// (i, j) is ranges[j * cols + i] = (first, count) into indices; both references use it.
+struct DropTiles {
+    static constexpr int kTexels = 16;
+    int cols = 0, rows = 0;
+    std::vector<glm::uvec2> ranges;
+    std::vector<uint32_t> indices;
+};
+DropTiles drops_by_tile(std::span<const RainMetaball> drops, glm::vec2 glass_size_m, int width, int height);
+
+// Both references bisect the height above the glass from 0 to kMetaballReach times
+// the largest radius (no surface can be higher), halving it this many times.
+constexpr int kReferenceBisections = 24;
+float bisection_ceiling_m(std::span<const RainMetaball> drops);
 
 // Heights and normals over a width x height grid of texels covering glass_size_m,
 // sampled at texel centres like the GPU path; row 0 at v = 0.
