@@ -26,6 +26,7 @@ const Material glass{"glass", {0.035f, 0.05f, 0.065f, 1}, 0.0f, 0.05f};
 const Material tyre{"tyre", {0.018f, 0.018f, 0.02f, 1}, 0.0f, 0.9f};
 const Material chrome{"chrome", {0.6f, 0.6f, 0.62f, 1}, 0.9f, 0.25f};
 const Material trim{"trim", {0.03f, 0.03f, 0.032f, 1}, 0.1f, 0.6f};
+const Material headliner{"headliner", {0.55f, 0.53f, 0.5f, 1}, 0.0f, 0.95f};
 const Material headlight{"headlight", {0.9f, 0.88f, 0.8f, 1}, 0.0f, 0.1f};
 const Material taillight{"taillight", {0.45f, 0.01f, 0.01f, 1}, 0.0f, 0.2f};
 const Material hull_white{"hull_white", {0.78f, 0.78f, 0.76f, 1}, 0.0f, 0.35f};
@@ -89,6 +90,15 @@ Asset car() {
     poly(win, {}, {{-1.48f - 0.01f, 0.94f, -0.65f}, {-1.48f - 0.01f, 0.94f, 0.65f}, {-1.19f - 0.01f, 1.4f, 0.6f},
                    {-1.19f - 0.01f, 1.4f, -0.6f}},
          {rear_n.x, rear_n.y, 0}, flat());
+    // The cabin seen from the driver's seat: a roof lining and A-pillars framing the
+    // glass. Both sit inside the cabin's shell, so nothing changes outside.
+    box(a.part("headliner", mat::headliner), {}, {-1.1f, 1.4f, -0.76f}, {0.28f, 1.415f, 0.76f}, flat());
+    Part& pillars = a.part("pillars", mat::trim);
+    for (float side : {-1.0f, 1.0f}) {
+        const vec2 in0 = -slope_n * 0.01f, in1 = -slope_n * 0.05f;
+        prism(pillars, {}, {lo + in1, lo + in0, hi + in0, hi + in1}, side < 0 ? -0.77f : 0.69f,
+              side < 0 ? -0.69f : 0.77f, flat());
+    }
     box(a.part("bumpers", mat::trim), {}, {2.02f, 0.3f, -0.86f}, {2.14f, 0.44f, 0.86f}, flat());
     box(a.parts.back(), {}, {-2.14f, 0.3f, -0.86f}, {-2.02f, 0.44f, 0.86f}, flat());
     Part& lights = a.part("headlights", mat::headlight);

@@ -51,6 +51,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
         behind_fbo_.check_complete();
         scene_colour_fbo_ = gl::Framebuffer::create("rain.scene_colour");
         scene_colour_fbo_.attach_colour(0, t.colour());
+        scene_colour_fbo_.attach_depth(t.depth());
         scene_colour_fbo_.check_complete();
     }
     glNamedFramebufferReadBuffer(t.scene().id(), GL_COLOR_ATTACHMENT0);
@@ -60,7 +61,13 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
 
     glBindFramebuffer(GL_FRAMEBUFFER, scene_colour_fbo_.id());
     glViewport(0, 0, behind_w_, behind_h_);
-    glDisable(GL_DEPTH_TEST);  // the glass is the nearest thing the driver sees
+    // Tested, not written, against the scene's depth: the roof lining and the pillars
+    // between the driver and the glass hide it; the offset keeps the glass's own depth
+    // (where the scene drew it) from fighting with the drops.
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(-1.0f, -4.0f);
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
@@ -94,6 +101,8 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     behind_.bind(1);
     mesh_->draw();
     glDisable(GL_BLEND);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
 }
 
