@@ -46,6 +46,7 @@ void DustGeometry::rebuild(const sim::DustField& field) {
     scratch_indices_.clear();
     scratch_fins_.clear();
     scratch_fin_indices_.clear();
+    scratch_lit_.clear();
     ranges_.assign(s.props().size(), {});
     const auto& idx = s.indices();
     for (size_t p = 0; p < s.props().size(); ++p) {
@@ -76,6 +77,13 @@ void DustGeometry::rebuild(const sim::DustField& field) {
             }
             scratch_fin_indices_.insert(scratch_fin_indices_.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
         }
+        // Only the vertices under dust are lit each frame: the rest draw nothing.
+        r.first_lit = uint32_t(scratch_lit_.size());
+        std::vector<uint32_t> lit(scratch_indices_.begin() + std::ptrdiff_t(r.first_shell_index), scratch_indices_.end());
+        std::sort(lit.begin(), lit.end());
+        lit.erase(std::unique(lit.begin(), lit.end()), lit.end());
+        scratch_lit_.insert(scratch_lit_.end(), lit.begin(), lit.end());
+        r.lit_count = uint32_t(lit.size());
         r.shell_index_count = GLsizei(scratch_indices_.size() - r.first_shell_index);
         r.fin_index_count = GLsizei(scratch_fin_indices_.size() - r.first_fin_index);
     }
@@ -89,9 +97,11 @@ void DustGeometry::rebuild(const sim::DustField& field) {
     fit(shell_indices_, "dust.shell_indices", scratch_indices_.size() * sizeof(uint32_t));
     fit(fin_vertices_, "dust.fin_vertices", scratch_fins_.size() * sizeof(FinVertex));
     fit(fin_indices_, "dust.fin_indices", scratch_fin_indices_.size() * sizeof(uint32_t));
+    fit(lit_vertices_, "dust.lit_vertices", scratch_lit_.size() * sizeof(uint32_t));
     if (!scratch_indices_.empty()) shell_indices_.update<uint32_t>(0, scratch_indices_);
     if (!scratch_fins_.empty()) fin_vertices_.update<FinVertex>(0, scratch_fins_);
     if (!scratch_fin_indices_.empty()) fin_indices_.update<uint32_t>(0, scratch_fin_indices_);
+    if (!scratch_lit_.empty()) lit_vertices_.update<uint32_t>(0, scratch_lit_);
     shell_vao_.element_buffer(shell_indices_);
     fin_vao_.vertex_buffer(0, fin_vertices_, 0, sizeof(FinVertex));
     fin_vao_.element_buffer(fin_indices_);

@@ -14,6 +14,8 @@
 namespace effects {
 
 struct DustDrawRange {
+    uint32_t first_lit = 0;  // into lit_vertices(): the vertices the shells stand on
+    uint32_t lit_count = 0;
     GLsizei shell_index_count = 0;
     size_t first_shell_index = 0;
     GLsizei fin_index_count = 0;
@@ -22,8 +24,10 @@ struct DustDrawRange {
 
 class DustGeometry {
 public:
-    // Amounts at or below this hold no shells.
-    static constexpr float kMinAmount = 0.02f;
+    // Amounts at or below this hold no shells: shell.frag.glsl keeps nothing below
+    // smoothstep(0.08, 0.85, amount) = 0.01, and amounts only interpolate between the
+    // vertices, so a triangle whose vertices are all below it draws no texel.
+    static constexpr float kMinAmount = 0.125f;
 
     // Uploads what changed since the last call; cheap when nothing did.
     void update(const sim::DustField& field, const SceneDesc& scene);
@@ -31,6 +35,7 @@ public:
     const gl::Buffer& vertices() const { return vertices_; }  // position, normal per vertex
     const gl::Buffer& vertex_light() const { return vertex_light_; }  // two vec4 per vertex
     const gl::Buffer& sky_exposure() const { return sky_exposure_; }  // float per vertex
+    const gl::Buffer& lit_vertices() const { return lit_vertices_; }  // uint: dusty vertices only
     const gl::VertexArray& shells() const { return shell_vao_; }
     const gl::VertexArray& fins() const { return fin_vao_; }
     const std::vector<DustDrawRange>& ranges() const { return ranges_; }  // per sim prop
@@ -52,10 +57,10 @@ private:
 
     const sim::DustField* field_ = nullptr;
     uint64_t revision_ = ~0ull;
-    gl::Buffer vertices_, vertex_light_, sky_exposure_, amounts_, shell_indices_, fin_vertices_, fin_indices_;
+    gl::Buffer vertices_, vertex_light_, sky_exposure_, lit_vertices_, amounts_, shell_indices_, fin_vertices_, fin_indices_;
     gl::VertexArray shell_vao_, fin_vao_;
     std::vector<DustDrawRange> ranges_;
-    std::vector<uint32_t> scratch_indices_, scratch_fin_indices_;
+    std::vector<uint32_t> scratch_indices_, scratch_fin_indices_, scratch_lit_;
     std::vector<FinVertex> scratch_fins_;
     size_t dusty_triangles_ = 0, fin_quads_ = 0;
 };

@@ -85,14 +85,15 @@ void DustPass::render(const FrameContext& frame) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, geometry_.vertices().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, geometry_.vertex_light().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, geometry_.sky_exposure().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, geometry_.lit_vertices().id());
     for (size_t i = 0; i < props.size(); ++i) {
         const float pad = dust_look(props[i].kind).height_m;
         visible[i] = geometry_.ranges()[i].shell_index_count > 0 &&
                      in_view(cam.view_proj, props[i].bounds.min - pad, props[i].bounds.max + pad);
         if (!visible[i]) continue;
-        light_.set("u_first", props[i].first_vertex);
-        light_.set("u_count", props[i].vertex_count);
-        glDispatchCompute((props[i].vertex_count + 63) / 64, 1, 1);
+        light_.set("u_first", geometry_.ranges()[i].first_lit);
+        light_.set("u_count", geometry_.ranges()[i].lit_count);
+        glDispatchCompute((geometry_.ranges()[i].lit_count + 63) / 64, 1, 1);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
