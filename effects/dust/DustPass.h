@@ -22,6 +22,7 @@ struct DustLod {
     int min_shells = 3;         // far away
     float full_detail_m = 3.0f; // closer than this: max_shells; beyond, falling as 1/distance
     float fin_distance_m = 14.0f; // props farther away get no fins
+    float coarse_from_m = 5.0f;   // props farther away: shells and fins on the coarse level
 };
 
 class DustPass final : public Pass {
@@ -33,6 +34,8 @@ public:
 
     // Shells drawn for a prop whose nearest point is distance_m from the eye.
     int shells_at(float distance_m) const;
+    // The DustGeometry level drawn for a prop distance_m from the eye.
+    int level_at(float distance_m) const;
     DustLod& lod() { return lod_; }
     bool& fins_enabled() { return fins_; }
     const DustGeometry& geometry() const { return geometry_; }
