@@ -182,6 +182,10 @@ TEST_F(DustRenderTest, FinsChangeGrazingViewsAndShellsThinOutWithDistance) {
     EXPECT_EQ(stage.dust.shells_at(1.0f), stage.dust.lod().max_shells);
     EXPECT_GT(stage.dust.shells_at(2.0f), stage.dust.shells_at(10.0f));
     EXPECT_EQ(stage.dust.shells_at(500.0f), stage.dust.lod().min_shells);
+    // Fins only where the stack is tall enough on screen for its shells to show as lines.
+    stage.dust.fins_enabled() = true;
+    EXPECT_TRUE(stage.dust.fins_at(stage.dust.lod().fin_min_px));
+    EXPECT_FALSE(stage.dust.fins_at(0.5f * stage.dust.lod().fin_min_px));
 }
 
 // Looking down on the crates and the shelf from 6 m and more, every prop beyond

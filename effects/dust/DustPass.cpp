@@ -37,7 +37,7 @@ void DustPass::register_params(ParamRegistry& params) {
     params.add("dust", "max shells", &lod_.max_shells, 1, 32);
     params.add("dust", "min shells", &lod_.min_shells, 1, 16);
     params.add("dust", "full detail (m)", &lod_.full_detail_m, 0.5f, 20.0f);
-    params.add("dust", "fin distance (m)", &lod_.fin_distance_m, 0.0f, 60.0f);
+    params.add("dust", "fin min height (px)", &lod_.fin_min_px, 0.0f, 16.0f);
     params.add("dust", "coarse from (m)", &lod_.coarse_from_m, 0.0f, 60.0f);
     params.add("dust", "fins", &fins_);
 }
@@ -128,13 +128,15 @@ void DustPass::render(const FrameContext& frame) {
             p->set("u_layers", fibres.layers());
             p->set("u_shells", shells);
         }
-        // The film on the surface (instance 0), then shells 1..shells.
+        // Shells shells..1 from the top down, then the film on the surface.
         shell_.use();
         shell_.set("u_fin", 0);
         geometry_.shells().bind();
         glDrawElementsInstanced(GL_TRIANGLES, r.shell_index_count, GL_UNSIGNED_INT,
                                 reinterpret_cast<const void*>(r.first_shell_index * sizeof(uint32_t)), shells + 1);
-        if (fins_ && r.fin_index_count > 0 && distance[i] < lod_.fin_distance_m) {
+        // The stack's height on screen at the prop's nearest point.
+        const float stack_px = look.height_m * cam.proj[1][1] * 0.5f * float(t.height()) / std::max(distance[i], 1e-3f);
+        if (r.fin_index_count > 0 && fins_at(stack_px)) {
             fin_.use();
             fin_.set("u_fin", 1);
             geometry_.fins().bind();
