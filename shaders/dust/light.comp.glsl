@@ -1,7 +1,7 @@
 #version 450 core
-// Light and fog once per dusty vertex per frame (only those under dust) (dust/vertex_light.glsl), read by
-// every shell and fin standing on it: the shells would otherwise light each vertex
-// once per layer.
+// Light and fog once per frame for each vertex under dust (dust/vertex_light.glsl),
+// read by every shell and fin standing on it: the shells would otherwise light each
+// vertex once per layer. Vertices without dust draw nothing and are skipped.
 #include "common/sky.glsl"
 #include "common/lighting.glsl"
 #include "dust/vertex_light.glsl"
