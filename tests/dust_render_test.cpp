@@ -1,8 +1,9 @@
 // The dust pass on a real headless context, over the harbour's warehouse props: the
 // dust shows on tops and not under the shelf's boards, a cleared patch shows, fins
-// change grazing views, shells thin out with distance, and a close-up of the crates
-// matches its golden in tests/data/dust. SPINDRIFT_UPDATE_GOLDENS=1 rewrites the
-// golden; SPINDRIFT_DUST_PNG_DIR=dir writes the frames there too.
+// change grazing views, shells thin out with distance, the coarse level far away looks
+// like the fine one, and a close-up of the crates matches its golden in
+// tests/data/dust. SPINDRIFT_UPDATE_GOLDENS=1 rewrites the golden;
+// SPINDRIFT_DUST_PNG_DIR=dir writes the frames there too.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -181,6 +182,49 @@ TEST_F(DustRenderTest, FinsChangeGrazingViewsAndShellsThinOutWithDistance) {
     EXPECT_EQ(stage.dust.shells_at(1.0f), stage.dust.lod().max_shells);
     EXPECT_GT(stage.dust.shells_at(2.0f), stage.dust.shells_at(10.0f));
     EXPECT_EQ(stage.dust.shells_at(500.0f), stage.dust.lod().min_shells);
+    // Fins only where the stack is tall enough on screen for its shells to show as lines.
+    stage.dust.fins_enabled() = true;
+    EXPECT_TRUE(stage.dust.fins_at(stage.dust.lod().fin_min_px));
+    EXPECT_FALSE(stage.dust.fins_at(0.5f * stage.dust.lod().fin_min_px));
+}
+
+// Looking down on the crates and the shelf from 6 m and more, every prop beyond
+// coarse_from_m: the coarse level must cover what the sim's tessellation covers, in
+// the same tone.
+TEST_F(DustRenderTest, FromSixMetresTheCoarseLevelLooksLikeTheFineOne) {
+    constexpr int W = 640, H = 360;
+    DustStage stage("harbour", W, H);
+    sim::CameraView view;
+    view.eye = {-44.0f, 6.5f, -41.0f};
+    view.target = {-46.0f, 2.2f, -47.0f};
+    view.fov_y_deg = 60.0f;
+    const game::ImageRGBA8 bare = stage.render(view, false), coarse = stage.render(view, true);
+    for (const sim::DustPropRange& prop : stage.field().surface().props()) {
+        const float d = glm::length(view.eye - glm::clamp(view.eye, prop.bounds.min, prop.bounds.max));
+        EXPECT_EQ(stage.dust.level_at(d), 1) << prop.name << " at " << d << " m";
+    }
+    EXPECT_LT(stage.dust.geometry().dusty_triangles(1) * 3, stage.dust.geometry().dusty_triangles(0));
+    const float coarse_from = stage.dust.lod().coarse_from_m;
+    stage.dust.lod().coarse_from_m = 1000.0f;
+    const game::ImageRGBA8 fine = stage.render(view, true);
+    stage.dust.lod().coarse_from_m = coarse_from;
+    save(coarse, "view_coarse.png");
+    save(fine, "view_fine.png");
+    // Around each prop in view: how much the dust changed, and how bright it is there.
+    const effects::Camera camera = effects::make_camera(view, float(W) / float(H));
+    int seen = 0;
+    for (const sim::DustPropRange& prop : stage.field().surface().props()) {
+        const glm::vec4 clip = camera.view_proj * glm::vec4(prop.centre(), 1.0f);
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        if (clip.w <= 0.0f || std::abs(ndc.x) > 0.9f || std::abs(ndc.y) > 0.9f) continue;
+        const glm::ivec2 at{int((ndc.x * 0.5f + 0.5f) * W), int((0.5f - ndc.y * 0.5f) * H)};
+        const WindowStats f = stats(fine, &bare, at, 12), c = stats(coarse, &bare, at, 12);
+        if (f.changed < 0.05) continue;  // too little of its dust faces the eye
+        ++seen;
+        EXPECT_NEAR(c.changed, f.changed, 0.2 * f.changed) << prop.name;
+        EXPECT_NEAR(c.luma, f.luma, 3.0) << prop.name;
+    }
+    EXPECT_GE(seen, 3) << "the three crates show their dust";
 }
 
 TEST_F(DustRenderTest, UnderTheShelfBoardsThereIsLittleDust) {

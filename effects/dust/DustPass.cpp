@@ -37,7 +37,8 @@ void DustPass::register_params(ParamRegistry& params) {
     params.add("dust", "max shells", &lod_.max_shells, 1, 32);
     params.add("dust", "min shells", &lod_.min_shells, 1, 16);
     params.add("dust", "full detail (m)", &lod_.full_detail_m, 0.5f, 20.0f);
-    params.add("dust", "fin distance (m)", &lod_.fin_distance_m, 0.0f, 60.0f);
+    params.add("dust", "fin min height (px)", &lod_.fin_min_px, 0.0f, 16.0f);
+    params.add("dust", "coarse from (m)", &lod_.coarse_from_m, 0.0f, 60.0f);
     params.add("dust", "fins", &fins_);
 }
 
@@ -46,6 +47,8 @@ int DustPass::shells_at(float distance_m) const {
     int n = int(std::lround(float(lod_.max_shells) * lod_.full_detail_m / d));
     return std::clamp(n, std::min(lod_.min_shells, lod_.max_shells), lod_.max_shells);
 }
+
+int DustPass::level_at(float distance_m) const { return distance_m >= lod_.coarse_from_m ? 1 : 0; }
 
 const FibreTexture& DustPass::fibres_for(sim::DustKind kind, const FibreDirections& directions) {
     auto& slot = fibres_[size_t(kind)];
@@ -60,7 +63,7 @@ const FibreTexture& DustPass::fibres_for(sim::DustKind kind, const FibreDirectio
 void DustPass::render(const FrameContext& frame) {
     const sim::DustField* field = frame.world.find<sim::DustField>();
     if (!field || field->surface().props().empty()) return;
-    geometry_.update(*field, frame.scene.desc);
+    geometry_.update(*field, frame.world.level().dust, frame.scene.desc);
     if (geometry_.dusty_triangles() == 0) return;
 
     const SceneTargets& t = frame.scene.targets;
@@ -76,23 +79,28 @@ void DustPass::render(const FrameContext& frame) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(-1.0f, -2.0f);
 
-    // The props in view, lit once per vertex.
+    // The props in view, lit once per vertex of the level they are drawn at.
     const auto& props = field->surface().props();
     std::vector<bool> visible(props.size());
+    std::vector<float> distance(props.size());
+    std::vector<const DustDrawRange*> range(props.size());
     frame.scene.lighting.apply(light_);
     light_.set("u_eye", cam.eye);
     light_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, geometry_.vertices().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, geometry_.vertex_light().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, geometry_.sky_exposure().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, geometry_.lit_vertices().id());
     for (size_t i = 0; i < props.size(); ++i) {
         const float pad = dust_look(props[i].kind).height_m;
-        visible[i] = geometry_.ranges()[i].shell_index_count > 0 &&
+        distance[i] = glm::length(cam.eye - glm::clamp(cam.eye, props[i].bounds.min, props[i].bounds.max));
+        range[i] = &geometry_.ranges(level_at(distance[i]))[i];
+        visible[i] = range[i]->shell_index_count > 0 &&
                      in_view(cam.view_proj, props[i].bounds.min - pad, props[i].bounds.max + pad);
         if (!visible[i]) continue;
-        light_.set("u_first", props[i].first_vertex);
-        light_.set("u_count", props[i].vertex_count);
-        glDispatchCompute((props[i].vertex_count + 63) / 64, 1, 1);
+        light_.set("u_first", range[i]->first_lit);
+        light_.set("u_count", range[i]->lit_count);
+        glDispatchCompute((range[i]->lit_count + 63) / 64, 1, 1);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
@@ -106,12 +114,11 @@ void DustPass::render(const FrameContext& frame) {
     for (size_t i = 0; i < props.size(); ++i) {
         if (!visible[i]) continue;
         const sim::DustPropRange& prop = props[i];
-        const DustDrawRange& r = geometry_.ranges()[i];
+        const DustDrawRange& r = *range[i];
         const DustLook look = dust_look(prop.kind);
         const FibreTexture& fibres = fibres_for(prop.kind, frame.scene.desc.fibre_directions);
         fibres.bind(kFibreUnit, kLuminanceUnit);
-        const float distance = glm::length(cam.eye - glm::clamp(cam.eye, prop.bounds.min, prop.bounds.max));
-        const int shells = shells_at(distance);
+        const int shells = shells_at(distance[i]);
         for (const gl::Program* p : {&shell_, &fin_}) {
             p->set("u_height_m", look.height_m);
             p->set("u_tile_m", look.tile_m);
@@ -121,13 +128,15 @@ void DustPass::render(const FrameContext& frame) {
             p->set("u_layers", fibres.layers());
             p->set("u_shells", shells);
         }
-        // The film on the surface (instance 0), then shells 1..shells.
+        // Shells shells..1 from the top down, then the film on the surface.
         shell_.use();
         shell_.set("u_fin", 0);
         geometry_.shells().bind();
         glDrawElementsInstanced(GL_TRIANGLES, r.shell_index_count, GL_UNSIGNED_INT,
                                 reinterpret_cast<const void*>(r.first_shell_index * sizeof(uint32_t)), shells + 1);
-        if (fins_ && r.fin_index_count > 0 && distance < lod_.fin_distance_m) {
+        // The stack's height on screen at the prop's nearest point.
+        const float stack_px = look.height_m * cam.proj[1][1] * 0.5f * float(t.height()) / std::max(distance[i], 1e-3f);
+        if (r.fin_index_count > 0 && fins_at(stack_px)) {
             fin_.use();
             fin_.set("u_fin", 1);
             geometry_.fins().bind();

@@ -21,7 +21,9 @@ struct DustLod {
     int max_shells = 12;        // up close: more shells than fibre layers, so none shows
     int min_shells = 3;         // far away
     float full_detail_m = 3.0f; // closer than this: max_shells; beyond, falling as 1/distance
-    float fin_distance_m = 14.0f; // props farther away get no fins
+    float fin_min_px = 2.0f;      // fins only where the full stack is this tall on screen
+                                  // (lower, the shells cannot show as lines)
+    float coarse_from_m = 5.0f;   // props farther away: shells and fins on the coarse level
 };
 
 class DustPass final : public Pass {
@@ -33,6 +35,10 @@ public:
 
     // Shells drawn for a prop whose nearest point is distance_m from the eye.
     int shells_at(float distance_m) const;
+    // Whether a prop whose dust stack projects to stack_px pixels gets fins.
+    bool fins_at(float stack_px) const { return fins_ && stack_px >= lod_.fin_min_px; }
+    // The DustGeometry level drawn for a prop distance_m from the eye.
+    int level_at(float distance_m) const;
     DustLod& lod() { return lod_; }
     bool& fins_enabled() { return fins_; }
     const DustGeometry& geometry() const { return geometry_; }

@@ -187,8 +187,10 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
     dust_ms /= frames;
     const std::string res = std::string(where == DustBenchView::CloseUp ? "close-up " : "") + "@" +
                             std::to_string(width) + "x" + std::to_string(height);
-    const std::string note = std::to_string(props.size()) + " props, " + std::to_string(dust.geometry().dusty_triangles()) +
-                             " dusty triangles, " + std::to_string(dust.geometry().fin_quads()) + " fins" +
+    const effects::DustGeometry& g = dust.geometry();
+    const std::string note = std::to_string(props.size()) + " props, " + std::to_string(g.dusty_triangles(0)) + " dusty triangles, " +
+                             std::to_string(g.fin_quads(0)) + " fins (coarse level " + std::to_string(g.dusty_triangles(1)) + ", " +
+                             std::to_string(g.fin_quads(1)) + ")" +
                              (where == DustBenchView::CloseUp ? ", " + std::to_string(dust.shells_at(2.0f)) + " shells near" : "");
     report.add({"dust", "warehouse props without dust " + res, props_ms, "ms", std::nullopt, false, note});
     report.add({"dust", "dust pass (shells + fins) " + res, dust_ms, "ms", std::nullopt, false, note});

@@ -1,7 +1,8 @@
 #version 450 core
-// Shell i of u_shells (instance 0 is the film on the surface itself): the dusty
-// surface pushed out along its normal by i/u_shells of the dust height at this
-// vertex's amount. Lit per vertex (dust/light.comp.glsl): the tessellation is finer
+// Shell i of u_shells (i = 0 is the film on the surface itself): the dusty surface
+// pushed out along its normal by i/u_shells of the dust height at this vertex's
+// amount. Instances run from the top shell down, so that the fibres kept above fail
+// the early depth test of the layers below instead of being shaded over. Lit per vertex (dust/light.comp.glsl): the tessellation is finer
 // than the light changes.
 
 layout(location = 0) in vec3 a_position;
@@ -24,7 +25,7 @@ out vec3 v_light;
 out vec4 v_fog;
 
 void main() {
-    float h = float(gl_InstanceID) / float(u_shells);
+    float h = float(u_shells - gl_InstanceID) / float(u_shells);
     vec3 n = normalize(a_normal);
     vec3 p = a_position + n * (h * u_height_m * a_amount);
     v_base_pos = a_position;
