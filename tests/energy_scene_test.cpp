@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include "effects/Renderer.h"
@@ -109,6 +110,17 @@ Projected project(const effects::Camera& cam, glm::vec3 p) {
     return {{(ndc.x * 0.5f + 0.5f) * kWidth, (0.5f - ndc.y * 0.5f) * kHeight}, ndc.z * 0.5f + 0.5f};
 }
 
+// Points along the shot's segments, their sway included.
+std::vector<glm::vec3> along_segments(const sim::Shot& s, int per_segment) {
+    std::vector<glm::vec3> points;
+    for (const sim::EnergySegment& seg : s.segments)
+        for (int i = 0; i < per_segment; ++i)
+            points.push_back(seg.start + seg.direction * (seg.length_m * (i + 0.5f) / float(per_segment)));
+    return points;
+}
+
+bool on_screen(glm::vec2 px) { return px.x >= 0.0f && px.y >= 0.0f && px.x < kWidth && px.y < kHeight; }
+
 // How much brighter the shot made a pixel: the largest channel gain over the frame without it.
 int gain(const game::ImageRGBA8& with, const game::ImageRGBA8& without, int x, int y) {
     const size_t i = (size_t(y) * kWidth + x) * 4;
@@ -165,6 +177,7 @@ void expect_matches_golden(const game::ImageRGBA8& img, const std::string& name)
 constexpr int kBallAge = 4, kBeamAge = 31;  // ticks after the fire input
 constexpr float kSideOnM = 12.0f;           // the beam camera's distance from the shot's path
 constexpr glm::vec3 kCornerEye{-29.0f, 5.0f, -19.0f};  // north of the warehouse's east end
+constexpr int kDark = 2, kBleedPx = 20;  // hidden: no more gain than this, this far from the edge (bloom)
 constexpr int kLit = 40;                    // gain over the frame without the shot, of 255
 
 class EnergySceneTest : public ::testing::Test {
@@ -196,9 +209,54 @@ TEST_F(EnergySceneTest, ShotFromTheCarReadsAsABeamSideOn) {
     save(ball_plain, "ball_plain.png");
     save(beam_plain, "beam_plain.png");
 
-    const Spread b = spread_of(ball_frame, ball_plain, kLit), s = spread_of(beam_frame, beam_plain, kLit);
-    std::printf("ball: %d lit, sd %.1f x %.1f px; beam: %d lit, sd %.1f x %.1f px, axis %.3f %.3f\n", b.count,
-                b.along, b.across, s.count, s.along, s.across, s.axis.x, s.axis.y);
+    // The ball lights a round patch where it is.
+    const Spread b = spread_of(ball_frame, ball_plain, kLit);
+    std::printf("ball: %d pixels lit, sd %.1f x %.1f px\n", b.count, b.along, b.across);
+    EXPECT_GT(b.count, 1000);
+    EXPECT_LT(b.along, 1.6f * b.across);
+    // Its light on the road below pulls the patch's centre down a little.
+    EXPECT_LT(glm::distance(b.centre, project(ball_cam, ball_at).px), b.across);
+    const glm::ivec2 ball_px(project(ball_cam, ball_at).px);
+    const uint8_t* core = &ball_frame.pixels[(size_t(ball_px.y) * kWidth + ball_px.x) * 4];
+    EXPECT_GT(std::min({core[0], core[1], core[2]}), 215) << "a white core";
+
+    // The beam lights a streak along its projected path, several times longer than wide,
+    // from its tail to its head.
+    const Spread s = spread_of(beam_frame, beam_plain, kLit);
+    const glm::vec2 tail_px = project(beam_cam, beam.tail).px, head_px = project(beam_cam, beam.head).px;
+    const glm::vec2 path_dir = glm::normalize(head_px - tail_px);
+    const float path_px = glm::distance(tail_px, head_px), extent_px = s.along * std::sqrt(12.0f);
+    std::printf("beam: %d pixels lit, sd %.1f x %.1f px, extent %.0f px along a %.0f px path, axis off it by %.2f deg\n",
+                s.count, s.along, s.across, extent_px, path_px,
+                glm::degrees(std::acos(std::min(1.0f, std::fabs(glm::dot(s.axis, path_dir))))));
+    EXPECT_GT(path_px, 0.6f * kWidth);  // side-on: the beam is seen at nearly its full length
+    EXPECT_GT(s.along, 4.0f * s.across);
+    EXPECT_GT(std::fabs(glm::dot(s.axis, path_dir)), std::cos(glm::radians(3.0f)));
+    EXPECT_GT(extent_px, 0.9f * path_px);
+    EXPECT_LT(glm::distance(s.centre, 0.5f * (tail_px + head_px)), 0.1f * path_px);
+    // White along its core, blue in the glow around it.
+    int white = 0;
+    const std::vector<glm::vec3> axis = along_segments(shot.shot(), 16);
+    for (const glm::vec3& p : axis) {
+        const glm::ivec2 px(project(beam_cam, p).px);
+        const uint8_t* c = &beam_frame.pixels[(size_t(px.y) * kWidth + px.x) * 4];
+        white += std::min({c[0], c[1], c[2]}) > 215;
+    }
+    glm::dvec3 glow(0.0);
+    int glow_count = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            const int g = gain(beam_frame, beam_plain, x, y);
+            if (g <= kLit || g > 120) continue;
+            const size_t i = (size_t(y) * kWidth + x) * 4;
+            for (int c = 0; c < 3; ++c) glow[c] += int(beam_frame.pixels[i + c]) - int(beam_plain.pixels[i + c]);
+            ++glow_count;
+        }
+    glow /= double(std::max(glow_count, 1));
+    std::printf("beam: %d of %zu axis points white; glow gain r %.0f g %.0f b %.0f over %d pixels\n", white,
+                axis.size(), glow.x, glow.y, glow.z, glow_count);
+    EXPECT_GT(white, int(axis.size()) * 3 / 4);
+    EXPECT_GT(glow.z, 1.5 * glow.x);
     expect_matches_golden(ball_frame, "ball_side_on.png");
     expect_matches_golden(beam_frame, "beam_side_on.png");
 }
@@ -228,6 +286,41 @@ TEST_F(EnergySceneTest, WarehouseCornerCutsTheBeamOff) {
     const std::vector<float> depth = shot.scene_depth();
     const game::ImageRGBA8 without = plain.render(cam);
     save(without, "corner_plain.png");
+    // Where the opaque scene is nearer than the beam, the beam is hidden; elsewhere it shows.
+    struct Sample {
+        glm::ivec2 px;
+        bool hidden;
+    };
+    std::vector<Sample> samples;
+    for (const glm::vec3& p : along_segments(shot.shot(), 32)) {
+        const Projected q = project(cam, p);
+        if (!on_screen(q.px)) continue;
+        const glm::ivec2 px(q.px);
+        samples.push_back({px, depth[size_t(px.y) * kWidth + px.x] < q.depth});
+    }
+    int visible = 0, visible_lit = 0, hidden = 0, hidden_dark = 0, worst_hidden_gain = 0;
+    for (const Sample& a : samples) {
+        const int g = gain(frame, without, a.px.x, a.px.y);
+        if (!a.hidden) {
+            ++visible;
+            visible_lit += g > kLit;
+            continue;
+        }
+        // Bloom bleeds a little light over the corner's edge: judge hidden points away from it.
+        float to_visible = 1e9f;
+        for (const Sample& b : samples)
+            if (!b.hidden) to_visible = std::min(to_visible, glm::distance(glm::vec2(a.px), glm::vec2(b.px)));
+        if (to_visible < kBleedPx) continue;
+        ++hidden;
+        hidden_dark += g <= kDark;
+        worst_hidden_gain = std::max(worst_hidden_gain, g);
+    }
+    std::printf("corner: %d of %d visible axis points lit, %d of %d hidden ones dark (worst gain %d)\n", visible_lit,
+                visible, hidden_dark, hidden, worst_hidden_gain);
+    EXPECT_GT(visible, 30);
+    EXPECT_GT(hidden, 15);
+    EXPECT_EQ(visible_lit, visible);
+    EXPECT_EQ(hidden_dark, hidden);
     expect_matches_golden(frame, "beam_behind_warehouse.png");
 }
 
