@@ -63,7 +63,7 @@ struct HarbourStage {
         EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
         return capture.read();
     }
-    // Window depth of the last frame's opaque scene (water and glow not included).
+    // Window depth of the last frame's scene (opaque and water): where the glow's rays stop.
     std::vector<float> scene_depth() { return game::read_depth(depth_fbo.id(), kWidth, kHeight); }
 
     const sim::Shot& shot() const { return session.world->get<sim::Weapon>().shots().at(0); }
@@ -176,9 +176,10 @@ void expect_matches_golden(const game::ImageRGBA8& img, const std::string& name)
 
 constexpr int kBallAge = 4, kBeamAge = 31;  // ticks after the fire input
 constexpr float kSideOnM = 12.0f;           // the beam camera's distance from the shot's path
-constexpr glm::vec3 kCornerEye{-29.0f, 5.0f, -19.0f};  // north of the warehouse's east end
-constexpr int kDark = 2, kBleedPx = 20;  // hidden: no more gain than this, this far from the edge (bloom)
+constexpr glm::vec3 kCornerEye{-29.0f, 5.0f, -19.0f};  // off the warehouse's door side, by the corner
 constexpr int kLit = 40;                    // gain over the frame without the shot, of 255
+// A hidden point gains no more than kDark once kBleedPx from the corner's edge (bloom bleeds).
+constexpr int kDark = 2, kBleedPx = 20;
 
 class EnergySceneTest : public ::testing::Test {
 protected:
