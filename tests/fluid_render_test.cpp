@@ -277,9 +277,9 @@ TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
             EXPECT_GT(pixels_differing(images[a], images[b], 6.0f), 1000) << "methods " << a << " and " << b;  // 5200-5400
 }
 
-// The README's close-up: the harbour's tank at the pier's end after a stone fell in,
-// seen from the pier at the liquid's height, so the pier's edge, the sea and the
-// horizon behind it are bent through the front and back surfaces and tinted.
+// The README's close-up: the harbour's tank at the pier's end just after a stone fell
+// in, seen from the pier at the liquid's height, so the sea and the horizon behind
+// it, and the stone inside, are bent through the front and back surfaces and tinted.
 class FluidCloseUpTest : public FluidRenderTest {
 protected:
     void SetUp() override { context_->make_current(); }
@@ -335,12 +335,13 @@ sim::CameraView through_the_tank() {
 TEST_F(FluidCloseUpTest, ThroughTheTankAtTheHarbourMatchesItsGolden) {
     HarbourStage stage;
     sim::World& world = *stage.session.world;
-    // A stone dropped into the tank; 70 ticks on, its drops are in the air.
+    // A stone dropped into the tank; 40 ticks on, it lies on the floor under the
+    // liquid it threw up.
     const glm::vec3 spot = world.level().tank_spot;
     world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, spot + glm::vec3(0.1f, 1.7f, 0.2f), {0, 0, 1},
                                            {0, 0, 0});
-    for (int t = 0; t < 70; ++t) world.step({});
-    EXPECT_GE(world.get<sim::FluidTank>().fluid().splash_count(), 5u);  // 11 here
+    for (int t = 0; t < 40; ++t) world.step({});
+    EXPECT_GE(world.get<sim::FluidTank>().fluid().splash_count(), 5u);  // 15 here
     const game::ImageRGBA8 bare = stage.render(through_the_tank(), false);
     const game::ImageRGBA8 through = stage.render(through_the_tank(), true);
     maybe_write_png("closeup_bare", bare);
@@ -367,10 +368,10 @@ TEST_F(FluidCloseUpTest, ThroughTheTankAtTheHarbourMatchesItsGolden) {
     const double share = double(liquid) / double(w * h);
     EXPECT_GT(share, 0.12);  // 0.16 here
     ASSERT_GT(liquid, 0);
-    EXPECT_GT(double(changed) / liquid, 0.9);  // 0.95 here
+    EXPECT_GT(double(changed) / liquid, 0.9);  // 0.96 here
     const glm::vec3 tinted = tinted_sum / float(liquid), behind = bare_sum / float(liquid);
-    EXPECT_LT(tinted.x / (tinted.y + tinted.z), 0.8f * behind.x / (behind.y + behind.z));  // 0.30 against 0.45 here
-    EXPECT_GT(tinted.y + tinted.z, 150.0f);  // see-through, not dark: 369 here
+    EXPECT_LT(tinted.x / (tinted.y + tinted.z), 0.8f * behind.x / (behind.y + behind.z));  // 0.29 against 0.45 here
+    EXPECT_GT(tinted.y + tinted.z, 150.0f);  // see-through, not dark: 337 here
 
     const std::filesystem::path golden = std::filesystem::path(SPINDRIFT_TEST_DATA) / "fluid" / "through_the_tank.png";
     if (const char* update = std::getenv("SPINDRIFT_UPDATE_GOLDENS"); update && std::string(update) == "1") {
