@@ -335,8 +335,8 @@ sim::CameraView through_the_tank() {
 TEST_F(FluidCloseUpTest, ThroughTheTankAtTheHarbourMatchesItsGolden) {
     HarbourStage stage;
     sim::World& world = *stage.session.world;
-    // A stone dropped into the tank; 40 ticks on, it lies on the floor under the
-    // liquid it threw up.
+    // A stone dropped into the tank; 40 ticks on, it has bounced off the floor and the
+    // liquid it threw up stands around it.
     const glm::vec3 spot = world.level().tank_spot;
     world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, spot + glm::vec3(0.1f, 1.7f, 0.2f), {0, 0, 1},
                                            {0, 0, 0});
