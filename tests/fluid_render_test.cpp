@@ -1,7 +1,9 @@
 // The fluid pass on a real headless context: the tank on a small level, seen through
 // (refracted, tinted), its work confined to the tank's rectangle, a stone's splash
-// drawn as its own layer, and bad smoothing settings refused. Set
-// SPINDRIFT_FLUID_PNG_DIR to write the frames as PNGs.
+// drawn as its own layer, bad smoothing settings refused, and a close-up through the
+// harbour's tank after a stone that matches its golden in tests/data/fluid
+// (SPINDRIFT_UPDATE_GOLDENS=1 rewrites it). Set SPINDRIFT_FLUID_PNG_DIR to write the
+// frames as PNGs.
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -23,9 +25,11 @@
 #include "effects/scene/ShadowPass.h"
 #include "effects/scene/TonemapPass.h"
 #include "effects/water/WaterPass.h"
+#include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
 #include "game/capture/Readback.h"
 #include "game/platform/HeadlessContext.h"
+#include "game/session/GameSession.h"
 #include "sim/fluid/FluidTank.h"
 #include "sim/objects/ThrownObjects.h"
 
@@ -109,8 +113,8 @@ float difference(const game::ImageRGBA8& a, const game::ImageRGBA8& b, int x, in
 // Pixels where two frames differ by more than `threshold` (of 0..255 per channel).
 int pixels_differing(const game::ImageRGBA8& a, const game::ImageRGBA8& b, float threshold) {
     int n = 0;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x) n += difference(a, b, x, y) > threshold ? 1 : 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) n += difference(a, b, x, y) > threshold ? 1 : 0;
     return n;
 }
 
@@ -271,6 +275,111 @@ TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
     for (size_t a = 0; a < images.size(); ++a)
         for (size_t b = a + 1; b < images.size(); ++b)
             EXPECT_GT(pixels_differing(images[a], images[b], 6.0f), 1000) << "methods " << a << " and " << b;  // 5200-5400
+}
+
+// The README's close-up: the harbour's tank at the pier's end just after a stone fell
+// in, seen from the pier at the liquid's height, so the sea and the horizon behind
+// it, and the stone inside, are bent through the front and back surfaces and tinted.
+class FluidCloseUpTest : public FluidRenderTest {
+protected:
+    void SetUp() override { context_->make_current(); }
+};
+
+struct HarbourStage {
+    static constexpr int kW = 640, kH = 360;
+    HarbourStage()
+        : session(game::GameSession::open("harbour", 1)),
+          scene{session.level.scene, effects::SceneGeometry(session.level.scene, session.world->terrain()),
+                effects::SceneLighting(32, 1024), effects::SceneTargets{}} {
+        scene.lighting.sky.sun_dir = glm::normalize(session.world->level().sun_direction);
+        scene.targets.resize(kW, kH);
+        ldr = effects::gl::Texture::create_2d("test.ldr", GL_RGBA8, kW, kH);
+        output = effects::gl::Framebuffer::create("test.output");
+        output.attach_colour(0, ldr);
+        output.check_complete();
+    }
+    game::ImageRGBA8 render(const sim::CameraView& view, bool with_fluid) {
+        const effects::Camera camera = effects::make_camera(view, float(kW) / float(kH));
+        effects::FrameContext frame{*session.world, camera, scene, {output.id(), kW, kH}, 0.0};
+        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy, &water})
+            p->render(frame);
+        if (with_fluid) fluid.render(frame);
+        tonemap.render(frame);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        return game::read_framebuffer_rgba8(output.id(), kW, kH);
+    }
+
+    game::GameSession session;
+    effects::SceneResources scene;
+    effects::EnvironmentPass environment;
+    effects::ShadowPass shadow;
+    effects::OpaquePass opaque;
+    effects::SceneCopyPass copy;
+    effects::WaterPass water;
+    effects::FluidPass fluid;
+    effects::TonemapPass tonemap;
+    effects::gl::Texture ldr;
+    effects::gl::Framebuffer output;
+};
+
+// 2.6 m from the tank's centre, off to the side of the pier's axis, at the liquid's
+// middle height, so the horizon runs through the liquid.
+sim::CameraView through_the_tank() {
+    sim::CameraView v;
+    v.eye = {23.0f, 1.72f, 33.9f};
+    v.target = {21.9f, 1.66f, 36.3f};
+    v.fov_y_deg = 38.0f;
+    return v;
+}
+
+TEST_F(FluidCloseUpTest, ThroughTheTankAtTheHarbourMatchesItsGolden) {
+    HarbourStage stage;
+    sim::World& world = *stage.session.world;
+    // A stone dropped into the tank; 40 ticks on, it has bounced off the floor and the
+    // liquid it threw up stands around it.
+    const glm::vec3 spot = world.level().tank_spot;
+    world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, spot + glm::vec3(0.1f, 1.7f, 0.2f), {0, 0, 1},
+                                           {0, 0, 0});
+    for (int t = 0; t < 40; ++t) world.step({});
+    EXPECT_GE(world.get<sim::FluidTank>().fluid().splash_count(), 5u);  // 15 here
+    const game::ImageRGBA8 bare = stage.render(through_the_tank(), false);
+    const game::ImageRGBA8 through = stage.render(through_the_tank(), true);
+    maybe_write_png("closeup_bare", bare);
+    maybe_write_png("closeup_through", through);
+
+    // Where the body's smoothed front depth map has liquid, the harbour behind is
+    // bent and tinted: those pixels change, and red, absorbed most, falls against
+    // green and blue. The liquid is a sizeable share of the frame.
+    const int w = through.width, h = through.height;
+    std::vector<float> front(size_t(w) * size_t(h));
+    glGetTextureImage(stage.fluid.body_front().id(), 0, GL_RED, GL_FLOAT, GLsizei(front.size() * sizeof(float)),
+                      front.data());
+    glm::vec3 tinted_sum(0.0f), bare_sum(0.0f);
+    int liquid = 0, changed = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const float d = front[size_t(h - 1 - y) * size_t(w) + size_t(x)];  // GL rows are bottom-up
+            if (!(d > 0.0f && d < 1.0e5f)) continue;
+            ++liquid;
+            changed += difference(bare, through, x, y) > 12.0f ? 1 : 0;
+            tinted_sum += pixel(through, x, y);
+            bare_sum += pixel(bare, x, y);
+        }
+    const double share = double(liquid) / double(w * h);
+    EXPECT_GT(share, 0.12);  // 0.16 here
+    ASSERT_GT(liquid, 0);
+    EXPECT_GT(double(changed) / liquid, 0.9);  // 0.96 here
+    const glm::vec3 tinted = tinted_sum / float(liquid), behind = bare_sum / float(liquid);
+    EXPECT_LT(tinted.x / (tinted.y + tinted.z), 0.8f * behind.x / (behind.y + behind.z));  // 0.29 against 0.45 here
+    EXPECT_GT(tinted.y + tinted.z, 150.0f);  // see-through, not dark: 337 here
+
+    const std::filesystem::path golden = std::filesystem::path(SPINDRIFT_TEST_DATA) / "fluid" / "through_the_tank.png";
+    if (const char* update = std::getenv("SPINDRIFT_UPDATE_GOLDENS"); update && std::string(update) == "1") {
+        std::filesystem::create_directories(golden.parent_path());
+        game::write_png(golden, through);
+    }
+    const game::CompareResult r = game::compare_frames(through, game::read_png(golden));
+    EXPECT_TRUE(r.passed) << golden << ": " << r.summary;
 }
 
 }  // namespace

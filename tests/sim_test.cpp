@@ -253,6 +253,19 @@ TEST(ThrownObjects, HeavySinksToTheBottomLightFloats) {
     EXPECT_LT(std::fabs(l.velocity.y), 0.05f);
 }
 
+TEST(ThrownObjects, ComeToRestOnASolidsTop) {
+    // Dropped onto the test level's wall (top at 4 m), as a stone onto the harbour's
+    // tank floor on its plinth: it stays where it fell, not pushed out by a face.
+    sim::World w(make_test_level());
+    w.get<sim::ThrownObjects>().launch({0.22f, 2600.0f, 0.0f}, {152.0f, 7.0f, -12.0f}, {0.0f, 0.0f, 1.0f},
+                                       {0.0f, 0.0f, 0.0f});
+    for (int i = 0; i < 180; ++i) w.step({});
+    const sim::ThrownObject& o = w.get<sim::ThrownObjects>().objects().at(0);
+    EXPECT_NEAR(o.position.x, 152.0f, 1e-3f);
+    EXPECT_NEAR(o.position.z, -12.0f, 1e-3f);
+    EXPECT_NEAR(o.position.y, 4.0f + o.radius_m, 0.02f);
+}
+
 TEST(ThrownObjects, ThrowKeysLaunchFromTheVehicle) {
     sim::World w(make_test_level());
     tap(w, Control::ThrowHeavy);

@@ -21,6 +21,14 @@ constexpr int kSubsteps = 4;
 constexpr float kMinSlopeBase_m = 0.25f;        // about the harbour grid's spacing
 constexpr float kWaterVelocityLeak_per_s = 0.2f;
 
+// The highest top of the solids under `xz` that lie below `bottom`, or -inf.
+float solid_top_below(const std::vector<Aabb>& solids, glm::vec2 xz, float bottom) {
+    float top = -INFINITY;
+    for (const Aabb& b : solids)
+        if (b.contains_xz(xz) && b.max.y <= bottom + 1e-4f) top = std::max(top, b.max.y);
+    return top;
+}
+
 void step_object(ThrownObject& o, const World& world, float dt) {
     const Terrain& terrain = world.terrain();
     const float r = o.radius_m;
@@ -73,7 +81,10 @@ void step_object(ThrownObject& o, const World& world, float dt) {
         }
 
         glm::vec2 xz(o.position.x, o.position.z);
-        if (auto push = terrain.resolve_solids(xz, r, o.position.y - r, o.position.y + r)) {
+        // A solid's top holds what comes down onto it (the tank's floor on its plinth);
+        // only a solid the object was already below pushes it sideways.
+        const float top = solid_top_below(terrain.level().solids, xz, prev.y - r);
+        if (auto push = terrain.resolve_solids(xz, r, std::max(o.position.y - r, top), o.position.y + r)) {
             o.position.x = xz.x;
             o.position.z = xz.y;
             glm::vec2 n = *push / std::max(std::sqrt(push->x * push->x + push->y * push->y), 1e-6f);
@@ -83,7 +94,7 @@ void step_object(ThrownObject& o, const World& world, float dt) {
                 o.velocity.z -= 1.4f * into * n.y;
             }
         }
-        float ground = terrain.support_height({o.position.x, o.position.z}, o.position.y, r);
+        float ground = std::max(terrain.support_height({o.position.x, o.position.z}, o.position.y, r), top);
         if (o.position.y - r < ground) {
             o.position.y = ground + r;
             if (o.velocity.y < 0.0f) o.velocity.y *= -0.3f;
