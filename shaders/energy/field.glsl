@@ -46,10 +46,14 @@ vec2 line_integral(float A, float sqrt_A, float B, float m, float R, float s0, f
     float uc = sqrt(max(A * kEnergyCore_m * kEnergyCore_m - m * m, 0.0));
     float r0 = sqrt(u0 * u0 + m * m), r1 = sqrt(u1 * u1 + m * m);
     float rc = max(sqrt_A * kEnergyCore_m, m);  // sqrt(uc^2 + m^2)
-    float x = 0.0, y = 0.0;
-    if (u1 > uc) x = u0 >= uc ? log_ratio_arg(u0, r0, A * (s1 - s0), u1, r1) : log_ratio_arg(uc, rc, u1 - uc, u1, r1);
-    if (u0 < -uc)
-        y = u1 <= -uc ? log_ratio_arg(-u1, r1, A * (s1 - s0), -u0, r0) : log_ratio_arg(uc, rc, -uc - u0, -u0, r0);
+    // Each side starts at the interval's end or the core's edge, whichever is further out
+    // (the arguments are picked first: both sides of a branch may run).
+    bool whole_ahead = u0 >= uc, whole_behind = u1 <= -uc;
+    float x = log_ratio_arg(whole_ahead ? u0 : uc, whole_ahead ? r0 : rc, whole_ahead ? A * (s1 - s0) : u1 - uc, u1, r1);
+    float y = log_ratio_arg(whole_behind ? -u1 : uc, whole_behind ? r1 : rc, whole_behind ? A * (s1 - s0) : -uc - u0,
+                            -u0, r0);
+    x = u1 > uc ? x : 0.0;
+    y = u0 < -uc ? y : 0.0;
     float c0 = max(u0, -uc), c1 = min(u1, uc);
     float core = c1 > c0 ? (c1 - c0) / (sqrt_A * kEnergyCore_m) : 0.0;
     return vec2(x + y + x * y, core - sqrt_A * (s1 - s0) / R);
