@@ -40,7 +40,7 @@ float log_ratio_arg(float p0, float r0, float dp, float p1, float r1) {
 // sqrt(u^2 + m^2) / sqrt(A): outside the core the integral is asinh(u / m) / sqrt(A),
 // taken on each side of the closest point as a log ratio; inside the core (|u| < uc)
 // the density is clamped, a constant. The two sides share their square roots.
-vec2 line_integral(float A, float sqrt_A, float B, float m, float R, float s0, float s1) {
+vec2 line_integral(float A, float sqrt_A, float B, float m, float inv_R, float s0, float s1) {
     if (!(s1 > s0)) return vec2(0.0);
     float u0 = A * s0 + B, u1 = A * s1 + B;
     float uc = sqrt(max(A * kEnergyCore_m * kEnergyCore_m - m * m, 0.0));
@@ -56,13 +56,13 @@ vec2 line_integral(float A, float sqrt_A, float B, float m, float R, float s0, f
     y = u0 < -uc ? y : 0.0;
     float c0 = max(u0, -uc), c1 = min(u1, uc);
     float core = c1 > c0 ? (c1 - c0) / (sqrt_A * kEnergyCore_m) : 0.0;
-    return vec2(x + y + x * y, core - sqrt_A * (s1 - s0) / R);
+    return vec2(x + y + x * y, core - sqrt_A * (s1 - s0) * inv_R);
 }
 
 // The part of [s0, s1] within R of a point (A = 1) or an axis: A s^2 + 2 B s + C < R^2.
-vec2 within_radius(float A, float B, float m, float R, float s0, float s1) {
+vec2 within_radius(float A, float inv_A, float B, float m, float R, float s0, float s1) {
     float h = sqrt(max(A * R * R - m * m, 0.0));
-    return vec2(max(s0, (-B - h) / A), min(s1, (-B + h) / A));
+    return vec2(max(s0, (-B - h) * inv_A), min(s1, (-B + h) * inv_A));
 }
 
 // The closed-form energy of one segment along the ray: tail sphere, beam, head sphere.
@@ -82,17 +82,19 @@ float segment_energy(EnergySegmentGpu seg, vec3 q, float s_end) {
         head = h >= L ? vec2(0.0, s_end) : vec2(0.0);
         beam = h >= 0.0 && h <= L ? vec2(0.0, s_end) : vec2(0.0);
     } else {
-        float sI = clamp(-h0 / k, 0.0, s_end), sL = clamp((L - h0) / k, 0.0, s_end);
+        float inv_k = 1.0 / k;
+        float sI = clamp(-h0 * inv_k, 0.0, s_end), sL = clamp((L - h0) * inv_k, 0.0, s_end);
         tail = k > 0.0 ? vec2(0.0, sI) : vec2(sI, s_end);
         head = k > 0.0 ? vec2(sL, s_end) : vec2(0.0, sL);
         beam = k > 0.0 ? vec2(sI, sL) : vec2(sL, sI);
     }
     // Tail sphere about M (B = q.W), head sphere about M + L D (B = q.W - L k).
     float m_tail = length(qxW), m_head = length(qxW - L * qxD);
-    tail = within_radius(1.0, qW, m_tail, R, tail.x, tail.y);
-    head = within_radius(1.0, qW - L * k, m_head, R, head.x, head.y);
-    vec2 spheres = line_integral(1.0, 1.0, qW, m_tail, R, tail.x, tail.y);
-    vec2 e_head = line_integral(1.0, 1.0, qW - L * k, m_head, R, head.x, head.y);
+    float inv_R = 1.0 / R;
+    tail = within_radius(1.0, 1.0, qW, m_tail, R, tail.x, tail.y);
+    head = within_radius(1.0, 1.0, qW - L * k, m_head, R, head.x, head.y);
+    vec2 spheres = line_integral(1.0, 1.0, qW, m_tail, inv_R, tail.x, tail.y);
+    vec2 e_head = line_integral(1.0, 1.0, qW - L * k, m_head, inv_R, head.x, head.y);
     float x = spheres.x + e_head.x + spheres.x * e_head.x;
     float e = a * max(log1p_small(x) + spheres.y + e_head.y, 0.0);
 
@@ -101,11 +103,11 @@ float segment_energy(EnergySegmentGpu seg, vec3 q, float s_end) {
     if (A < 1e-12) {  // parallel to the axis: a constant distance
         float r = sqrt(seg.squares.w);
         float len = r < R ? max(beam.y - beam.x, 0.0) : 0.0;
-        return e + b * len * max(1.0 / max(r, kEnergyCore_m) - 1.0 / R, 0.0);
+        return e + b * len * max(1.0 / max(r, kEnergyCore_m) - inv_R, 0.0);
     }
     float Bb = dot(q, seg.across_beam.xyz), sqrt_A = sqrt(A);
-    beam = within_radius(A, Bb, m, R, beam.x, beam.y);
-    vec2 e_beam = line_integral(A, sqrt_A, Bb, m, R, beam.x, beam.y);
+    beam = within_radius(A, 1.0 / A, Bb, m, R, beam.x, beam.y);
+    vec2 e_beam = line_integral(A, sqrt_A, Bb, m, inv_R, beam.x, beam.y);
     return e + b * max((log1p_small(e_beam.x) + e_beam.y) / sqrt_A, 0.0);
 }
 
