@@ -18,16 +18,16 @@ namespace {
 // std430 layout of shaders/energy/field.glsl's EnergySegmentGpu: what depends only on
 // the eye and the segment, once per segment (in double) instead of once per pixel.
 struct SegmentGpu {
-    glm::vec4 eye_sphere, dir_length, across_beam, normal_radius, squares;
+    glm::vec4 eye_sphere, dir_length, across_beam, normal_radius, axial;
 };
 
 SegmentGpu segment_gpu(const sim::EnergySegment& s, glm::dvec3 eye) {
     const glm::dvec3 d(s.direction), w = eye - glm::dvec3(s.start);
     const double h0 = glm::dot(w, d);
-    const glm::dvec3 across = w - h0 * d, head = w - double(s.length_m) * d;
+    const glm::dvec3 across = w - h0 * d;
     return {glm::vec4(glm::vec3(w), s.sphere_strength), glm::vec4(s.direction, s.length_m),
             glm::vec4(glm::vec3(across), s.beam_strength), glm::vec4(glm::vec3(glm::cross(w, d)), s.radius_m),
-            glm::vec4(float(h0), float(glm::dot(w, w)), float(glm::dot(head, head)), float(glm::dot(across, across)))};
+            glm::vec4(float(h0), float(glm::length(across)), 0.0f, 0.0f)};
 }
 
 // The view ray towards the far plane's point at (x, y) in normalised device

@@ -11,7 +11,7 @@ struct EnergySegmentGpu {
     vec4 dir_length;    // D, L
     vec4 across_beam;   // W - (W.D) D: the eye's offset from the axis, b
     vec4 normal_radius; // W x D, R
-    vec4 squares;       // W.D, |W|^2, |W - L D|^2, |W - (W.D) D|^2
+    vec4 axial;         // W.D, |W - (W.D) D| (the eye's distance from the axis), -, -
 };
 layout(std430, binding = 0) readonly buffer EnergySegments { EnergySegmentGpu u_segments[]; };
 
@@ -69,7 +69,7 @@ vec2 within_radius(float A, float inv_A, float B, float m, float R, float s0, fl
 float segment_energy(EnergySegmentGpu seg, vec3 q, float s_end) {
     vec3 W = seg.eye_sphere.xyz, D = seg.dir_length.xyz;
     float a = seg.eye_sphere.w, L = seg.dir_length.w, b = seg.across_beam.w, R = seg.normal_radius.w;
-    float h0 = seg.squares.x;
+    float h0 = seg.axial.x;
     float k = dot(q, D), qW = dot(q, W);
     vec3 qxW = cross(q, W), qxD = cross(q, D);
 
@@ -101,7 +101,7 @@ float segment_energy(EnergySegmentGpu seg, vec3 q, float s_end) {
     // Beam: distance to the axis, A = |q x D|^2, B = q.(W - h0 D), A C - B^2 = (q.(W x D))^2.
     float A = dot(qxD, qxD), m = abs(dot(q, seg.normal_radius.xyz));
     if (A < 1e-12) {  // parallel to the axis: a constant distance
-        float r = sqrt(seg.squares.w);
+        float r = seg.axial.y;
         float len = r < R ? max(beam.y - beam.x, 0.0) : 0.0;
         return e + b * len * max(1.0 / max(r, kEnergyCore_m) - inv_R, 0.0);
     }
