@@ -579,3 +579,54 @@ TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
 
 }  // namespace
 
+
+// Per-tile culling against each segment's projected capsule: it takes away no pixel's
+// energy (segments all over the screen, at its edges and reaching past them, at 1 to
+// 60 m, across and along the view), lists a segment on few more tiles than its field
+// lights, and on none when it is wholly behind the eye.
+TEST_F(EnergyRenderTest, TileCullingFollowsTheProjectedCapsuleAndChangesNoPixel) {
+    constexpr int W = 320, H = 192, kTile = effects::EnergyTileGrid::kTilePx;
+    effects::EnergyProbe probe(W, H);
+    const effects::Camera cam = look({0, 1, 0}, {0, 1, -1}, W, H);
+    sim::Rng rng(16);
+    std::vector<EnergySegment> segs;
+    for (int i = 0; i < 40; ++i) {
+        const float depth = rng.range(1.0f, 60.0f);
+        const glm::vec3 start(rng.range(-1.1f, 1.1f) * depth, 1.0f + rng.range(-0.65f, 0.65f) * depth, -depth);
+        const glm::vec3 dir(rng.range(-1.0f, 1.0f), rng.range(-0.3f, 0.3f), rng.range(-1.0f, 1.0f));
+        segs.push_back(segment(start, dir, rng.range(0.0f, 5.0f), 0.12f, rng.range(0.5f, 1.6f)));
+    }
+    probe.draw_energy(pass, cam, segs);
+    const std::vector<glm::vec4> culled = probe.read();
+    pass.method().tile_culling = false;
+    probe.draw_energy(pass, cam, segs);
+    const std::vector<glm::vec4> unculled = probe.read();
+    pass.method().tile_culling = true;
+    int lit = 0;
+    for (size_t i = 0; i < culled.size(); ++i) {
+        ASSERT_EQ(culled[i].x, unculled[i].x) << "pixel " << i % W << "," << i / W;
+        lit += culled[i].x > 0.0f;
+    }
+    EXPECT_GT(lit, W * H / 4);
+
+    // One segment at a time: the tiles it is listed on against the tiles its field lights.
+    int listed_total = 0, lit_total = 0;
+    for (const EnergySegment& s : segs) {
+        const std::vector<EnergySegment> one = {s};
+        probe.draw_energy(pass, cam, one);
+        const std::vector<glm::vec4> h = probe.read();
+        std::vector<bool> lit_tile(size_t((W / kTile) * (H / kTile)), false);
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x)
+                if (h[size_t(y) * W + x].x > 0.0f) lit_tile[size_t(y / kTile) * (W / kTile) + x / kTile] = true;
+        listed_total += int(pass.tiles().tiles.size());
+        lit_total += int(std::count(lit_tile.begin(), lit_tile.end(), true));
+    }
+    EXPECT_GE(listed_total, lit_total);
+    EXPECT_LT(listed_total, 2 * lit_total);
+    std::printf("tile culling: %d tiles listed for %d lit, one segment at a time\n", listed_total, lit_total);
+
+    const std::vector<EnergySegment> behind = {segment({0, 1, 3}, {1, 0, 0}, 4.0f, 0.12f, 1.6f)};
+    probe.draw_energy(pass, cam, behind);
+    EXPECT_TRUE(pass.tiles().tiles.empty());
+}

@@ -4,6 +4,8 @@
 #include <vector>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
@@ -13,10 +15,28 @@ namespace effects {
 
 namespace {
 
-// std430 layout of shaders/energy/field.glsl's EnergySegmentGpu.
+// std430 layout of shaders/energy/field.glsl's EnergySegmentGpu: what depends only on
+// the eye and the segment, once per segment (in double) instead of once per pixel.
 struct SegmentGpu {
-    glm::vec4 start_sphere, dir_length, beam_radius;
+    glm::vec4 eye_sphere, dir_length, across_beam, normal_radius, axial;
 };
+
+SegmentGpu segment_gpu(const sim::EnergySegment& s, glm::dvec3 eye) {
+    const glm::dvec3 d(s.direction), w = eye - glm::dvec3(s.start);
+    const double h0 = glm::dot(w, d);
+    const glm::dvec3 across = w - h0 * d;
+    return {glm::vec4(glm::vec3(w), s.sphere_strength), glm::vec4(s.direction, s.length_m),
+            glm::vec4(glm::vec3(across), s.beam_strength), glm::vec4(glm::vec3(glm::cross(w, d)), s.radius_m),
+            glm::vec4(float(h0), float(glm::length(across)), 0.0f, 0.0f)};
+}
+
+// The view ray towards the far plane's point at (x, y) in normalised device
+// coordinates, scaled by that point's homogeneous w: unnormalised, and affine in x and
+// y (both the point's xyz and its w are), so a pixel gets it from its position.
+glm::dvec3 scaled_ray(const Camera& camera, double x, double y) {
+    const glm::dvec4 p = glm::dmat4(camera.inv_view_proj) * glm::dvec4(x, y, 1.0, 1.0);
+    return glm::dvec3(p) - glm::dvec3(camera.eye) * p.w;
+}
 
 constexpr GLuint kSegmentBinding = 0, kTileBinding = 1, kTileSegmentBinding = 2;
 constexpr GLuint kDepthUnit = 0;
@@ -132,11 +152,7 @@ void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int 
     bin_energy_segments(camera, width, height, segments, method_.tile_culling, tiles_);
     if (tiles_.tiles.empty()) return;
     std::vector<SegmentGpu> gpu(segments.size());
-    for (size_t i = 0; i < segments.size(); ++i) {
-        const sim::EnergySegment& s = segments[i];
-        gpu[i] = {glm::vec4(s.start, s.sphere_strength), glm::vec4(s.direction, s.length_m),
-                  glm::vec4(s.beam_strength, s.radius_m, 0.0f, 0.0f)};
-    }
+    for (size_t i = 0; i < segments.size(); ++i) gpu[i] = segment_gpu(segments[i], glm::dvec3(camera.eye));
     upload(segments_, "energy.segments", std::as_bytes(std::span(gpu)));
     upload(tile_list_, "energy.tiles", std::as_bytes(std::span(tiles_.tiles)));
     upload(tile_segments_, "energy.tile_segments", std::as_bytes(std::span(tiles_.indices)));
@@ -151,8 +167,16 @@ void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int 
     program_.set("u_viewport", glm::vec2(float(width), float(height)));
     program_.set("u_tile_px", float(EnergyTileGrid::kTilePx));
     program_.set("u_depth", int(kDepthUnit));
-    program_.set("u_inv_view_proj", camera.inv_view_proj);
-    program_.set("u_eye", camera.eye);
+    program_.set("u_depth_scale", glm::vec2(float(depth.width()) / float(width), float(depth.height()) / float(height)));
+    // The ray at pixel (0, 0) and its steps per pixel.
+    const glm::dvec3 r0 = scaled_ray(camera, -1.0, -1.0);
+    const glm::dvec3 dx = (scaled_ray(camera, 1.0, -1.0) - r0) / double(width);
+    const glm::dvec3 dy = (scaled_ray(camera, -1.0, 1.0) - r0) / double(height);
+    program_.set("u_ray_origin", glm::vec3(r0));
+    program_.set("u_ray_dx", glm::vec3(dx));
+    program_.set("u_ray_dy", glm::vec3(dy));
+    program_.set("u_forward", -glm::vec3(camera.view[0][2], camera.view[1][2], camera.view[2][2]));
+    program_.set("u_depth_to_view", glm::vec2(camera.proj[3][2], camera.proj[2][2]));
     program_.set("u_max_distance_m", look_.max_distance_m);
     program_.set("u_march_samples", method_.march_samples);
     program_.set("u_raw", int(raw));

@@ -1,7 +1,7 @@
 #pragma once
-// Per-tile culling of energy segments: the box around each segment's capsule of
-// influence (its cut-off radius around the axis and beyond both ends) is projected to
-// a screen rectangle, and each tile lists the segments whose rectangle covers it. The
+// Per-tile culling of energy segments: each segment's capsule of influence (its cut-off
+// radius around the axis and beyond both ends) is projected to the screen, and each
+// tile lists the segments whose projection can reach it. The
 // pass then shades only tiles with segments, each pixel integrating only its tile's
 // segments, so the cost follows the segments a pixel can see rather than all of them.
 #include <cstdint>

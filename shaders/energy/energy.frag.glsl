@@ -10,9 +10,12 @@ layout(std430, binding = 2) readonly buffer EnergyTileSegments { uint u_tile_seg
 flat in uvec2 v_list;
 
 uniform sampler2D u_depth;
-uniform mat4 u_inv_view_proj;
-uniform vec3 u_eye;
-uniform vec2 u_viewport;
+uniform vec2 u_depth_scale;      // depth texels per pixel (the bloom draws at a lower resolution)
+// The view ray through a pixel, unnormalised and affine in the pixel's position
+// (EnergyPass works it out from the camera).
+uniform vec3 u_ray_origin, u_ray_dx, u_ray_dy;
+uniform vec3 u_forward;          // the camera's view direction
+uniform vec2 u_depth_to_view;    // view depth = x / (ndc z + y)
 uniform float u_max_distance_m;  // sky pixels: rays end here
 uniform int u_march_samples;     // 0: closed form; N: ray marching with N samples
 uniform bool u_raw;              // write H (red) instead of the glow
@@ -22,16 +25,11 @@ uniform vec3 u_glow_colour;      // the ramp's falloff colour; the core goes whi
 
 out vec4 o_colour;
 
-vec3 unproject(vec2 ndc, float z) {
-    vec4 p = u_inv_view_proj * vec4(ndc, z, 1.0);
-    return p.xyz / p.w;
-}
-
-float march(vec3 S, vec3 q, float s_end) {
+float march(vec3 q, float s_end) {
     // Over the span of the tile's segments' bounding spheres on this ray.
     vec2 span = vec2(s_end, 0.0);
     for (uint i = 0u; i < v_list.y; ++i) {
-        vec2 r = segment_reach(u_segments[u_tile_segments[v_list.x + i]], S, q);
+        vec2 r = segment_reach(u_segments[u_tile_segments[v_list.x + i]], q);
         if (r.y > r.x) span = vec2(min(span.x, r.x), max(span.y, r.y));
     }
     span = vec2(max(span.x, 0.0), min(span.y, s_end));
@@ -39,31 +37,25 @@ float march(vec3 S, vec3 q, float s_end) {
     float ds = (span.y - span.x) / float(u_march_samples);
     float sum = 0.0;
     for (int j = 0; j < u_march_samples; ++j) {
-        vec3 P = S + q * (span.x + (float(j) + 0.5) * ds);
-        for (uint i = 0u; i < v_list.y; ++i) sum += segment_density(u_segments[u_tile_segments[v_list.x + i]], P);
+        float s = span.x + (float(j) + 0.5) * ds;
+        for (uint i = 0u; i < v_list.y; ++i) sum += segment_density(u_segments[u_tile_segments[v_list.x + i]], q, s);
     }
     return sum * ds;
 }
 
 void main() {
-    vec2 ndc = gl_FragCoord.xy / u_viewport * 2.0 - 1.0;
-    // The depth at this pixel (the bloom draws at a lower resolution than the depth).
-    float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy * vec2(textureSize(u_depth, 0)) / u_viewport), 0).r;
-    vec3 S = u_eye;
-    vec3 far_point = unproject(ndc, 1.0);
-    vec3 q = normalize(far_point - S);
-    float s_end = depth < 1.0 ? dot(unproject(ndc, depth * 2.0 - 1.0) - S, q) : u_max_distance_m;
+    float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy * u_depth_scale), 0).r;
+    vec3 q = normalize(u_ray_origin + gl_FragCoord.x * u_ray_dx + gl_FragCoord.y * u_ray_dy);
+    // The distance along the ray to the depth's point: its view depth over the ray's cosine.
+    float s_end = depth < 1.0 ? u_depth_to_view.x / (depth * 2.0 - 1.0 + u_depth_to_view.y) / dot(q, u_forward)
+                              : u_max_distance_m;
     s_end = clamp(s_end, 0.0, u_max_distance_m);
 
     float H = 0.0;
     if (u_march_samples > 0) {
-        H = march(S, q, s_end);
+        H = march(q, s_end);
     } else {
-        for (uint i = 0u; i < v_list.y; ++i) {
-            EnergySegmentGpu seg = u_segments[u_tile_segments[v_list.x + i]];
-            vec2 r = segment_reach(seg, S, q);
-            if (r.y > 0.0 && r.x < s_end) H += segment_energy(seg, S, q, s_end);
-        }
+        for (uint i = 0u; i < v_list.y; ++i) H += segment_energy(u_segments[u_tile_segments[v_list.x + i]], q, s_end);
     }
     if (u_raw) {
         o_colour = vec4(H, s_end, 0.0, 1.0);
