@@ -26,7 +26,7 @@ const Material glass{"glass", {0.035f, 0.05f, 0.065f, 1}, 0.0f, 0.05f};
 const Material tyre{"tyre", {0.018f, 0.018f, 0.02f, 1}, 0.0f, 0.9f};
 const Material chrome{"chrome", {0.6f, 0.6f, 0.62f, 1}, 0.9f, 0.25f};
 const Material trim{"trim", {0.03f, 0.03f, 0.032f, 1}, 0.1f, 0.6f};
-const Material headliner{"headliner", {0.55f, 0.53f, 0.5f, 1}, 0.0f, 0.95f};
+const Material headliner{"headliner", {0.8f, 0.78f, 0.74f, 1}, 0.0f, 0.95f};
 const Material headlight{"headlight", {0.9f, 0.88f, 0.8f, 1}, 0.0f, 0.1f};
 const Material taillight{"taillight", {0.45f, 0.01f, 0.01f, 1}, 0.0f, 0.2f};
 const Material hull_white{"hull_white", {0.78f, 0.78f, 0.76f, 1}, 0.0f, 0.35f};

@@ -38,9 +38,10 @@ void CameraRig::step(StepContext& ctx) {
 
     if (player.view() == ViewMode::Driver) {
         glm::mat4 m = pose.matrix();
-        // The driver's eyes: behind the windshield, above the seat.
-        glm::vec3 seat = in_car ? glm::vec3(-0.45f, 1.32f, 0.0f) : glm::vec3(-0.6f, 1.9f, 0.0f);
-        glm::vec3 look = seat + glm::vec3(10.0f, -0.6f, 0.0f);
+        // The driver's eyes: behind the windshield, above the seat, a hand below the roof
+        // lining so that the glass, not the roof, fills the view.
+        glm::vec3 seat = in_car ? glm::vec3(-0.45f, 1.2f, 0.0f) : glm::vec3(-0.6f, 1.9f, 0.0f);
+        glm::vec3 look = seat + glm::vec3(10.0f, in_car ? -0.2f : -0.6f, 0.0f);
         view_.eye = glm::vec3(m * glm::vec4(seat, 1.0f));
         view_.target = glm::vec3(m * glm::vec4(look, 1.0f));
         view_.up = glm::vec3(m * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
