@@ -42,8 +42,9 @@ FibreVolume grow_fibres(const FibreDirections& directions, const FibreGrowth& g)
         // Ranks spread evenly over the fibres so that a coverage fraction keeps that
         // fraction of them.
         const uint8_t rank = uint8_t(1 + (f * 254) / std::max(g.fibres - 1, 1));
-        glm::ivec3 p(int(rng.below(uint32_t(g.size))), int(rng.below(uint32_t(g.size))),
-                     std::min(g.layers - 1, int(std::pow(rng.unit(), g.bottom_heavy) * float(g.layers))));
+        // Braces: the draws happen in order (a call's arguments are unsequenced).
+        glm::ivec3 p{int(rng.below(uint32_t(g.size))), int(rng.below(uint32_t(g.size))),
+                     std::min(g.layers - 1, int(std::pow(rng.unit(), g.bottom_heavy) * float(g.layers)))};
         glm::vec3 heading = random_direction(rng, g.climb);
         auto recompute = [&] {
             float sum = 0.0f;
