@@ -19,8 +19,8 @@ namespace effects {
 
 struct DustLod {
     int max_shells = 12;        // up close: more shells than fibre layers, so none shows
-    int min_shells = 3;         // far away
-    float full_detail_m = 3.0f; // closer than this: max_shells; beyond, falling as 1/distance
+    int min_shells = 2;         // far away: the film and one shell once the stack is a pixel
+    float full_detail_m = 2.0f; // closer than this: max_shells; beyond, falling as 1/distance
     float fin_min_px = 2.0f;      // fins only where the full stack is this tall on screen
                                   // (lower, the shells cannot show as lines)
     float coarse_from_m = 5.0f;   // props farther away: shells and fins on the coarse level

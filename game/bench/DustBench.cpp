@@ -194,8 +194,13 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
                              (where == DustBenchView::CloseUp ? ", " + std::to_string(dust.shells_at(2.0f)) + " shells near" : "");
     report.add({"dust", "warehouse props without dust " + res, props_ms, "ms", std::nullopt, false, note});
     report.add({"dust", "dust pass (shells + fins) " + res, dust_ms, "ms", std::nullopt, false, note});
+    // The target is the warehouse view at 1280x720; the close-up (12 shells over
+    // most of the screen) is the worst case, reported beside it.
+    const bool targeted = width >= 1280 && where != DustBenchView::CloseUp;
     report.add({"dust", "dusty props / props without dust " + res, (props_ms + dust_ms) / props_ms, "x",
-                width >= 1280 ? std::optional<double>(2.0) : std::nullopt, false, "profile mode: glFinish around each"});
+                targeted ? std::optional<double>(2.0) : std::nullopt, false,
+                where == DustBenchView::CloseUp ? "profile mode: glFinish around each; worst case, no target"
+                                                : "profile mode: glFinish around each"});
 }
 
 }  // namespace game
