@@ -15,6 +15,7 @@
 #include "SimTestLevel.h"
 #include "game/level/LevelError.h"
 #include "game/level/LevelLoader.h"
+#include "ErrorMessage.h"
 #include "sim/rain/RainSim.h"
 #include "sim/world/World.h"
 
@@ -27,15 +28,6 @@ using sim::WiperMode;
 constexpr float kDt = 1.0f / 60.0f;
 constexpr float kRake = 0.76f;  // about the harbour car's 43 degrees
 constexpr float kToMps = 1.0f / 3.6f;
-
-std::string message_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "(no exception)";
-}
 
 RainSim flat_rain(const sim::RainParams& p = {}, uint64_t seed = 11) {
     std::vector<glm::vec3> lower, upper;
@@ -220,7 +212,7 @@ TEST(Rain, AWiperReversalLosesOrDuplicatesNoDrop) {
 TEST(Rain, TheBeadGrowsAlongTheBladeAndSpillsAtTheEndOfTheSweep) {
     sim::RainParams p;
     p.blades[0] = {{0.5f, 0.1f}, 0.1f, 0.6f, 0.3f, 2.5f};      // all its sweep on the glass
-    p.blades[1] = {{0.02f, 0.98f}, 0.0f, 0.01f, 0.0f, 0.1f};   // a stub in a corner, out of the way
+    p.blades[1] = {{0.02f, 0.98f}, 0.0f, 0.01f, 0.0f, 0.1f};   // a short blade parked in a corner, out of the way
     p.slide_mass_mg = 5000.0f;
     p.film_fraction = 0.0f;
     RainSim r = flat_rain(p);
