@@ -72,7 +72,7 @@ TEST(Rain, MassIsConservedAcrossMergesAndGridParticleConversions) {
     p.new_drop_max_mg = 80.0f;
     p.slide_mass_mg = 40.0f;  // most drops run: cell steps, merges on the way, trails
     RainSim r = flat_rain(p);
-    size_t most_particles = 0, most_moving = 0;
+    size_t most_particles = 0, most_moving = 0, most_trails = 0;
     for (int t = 0; t < 360; ++t) {
         r.advance(t < 240 ? 1.0f : 0.0f, WiperMode::High, 0.0f, parked(r), kDt);
         most_particles = std::max(most_particles, r.particles().size());
@@ -82,12 +82,14 @@ TEST(Rain, MassIsConservedAcrossMergesAndGridParticleConversions) {
             trails += d.trail();
         }
         most_moving = std::max(most_moving, moving);
+        most_trails = std::max(most_trails, trails);
         expect_balanced(r);
         if (::testing::Test::HasFailure()) FAIL() << "tick " << t;
     }
     expect_one_drop_per_cell(r);
     EXPECT_GT(r.ledger().added_mg, 1000.0);
     EXPECT_GT(most_moving, 50u);                // the grid model did move drops...
+    EXPECT_GT(most_trails, 10u);                // ...that left trailing drops...
     EXPECT_GT(most_particles, 100u);            // ...and the blades did convert them
     EXPECT_GT(r.ledger().evaporated_mg, 0.0);   // trailing drops and film
     EXPECT_GT(r.ledger().drained_mg, 0.0);      // run off the lower edge, and counted
