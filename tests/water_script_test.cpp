@@ -71,7 +71,7 @@ TEST(HarbourBoatScript, CheckpointsCatchTheSplashesTheyName) {
         bool caught = false;
         for (size_t k = 0; k < water.sheets().size(); ++k) {
             if (!started[k] || water.sheets()[k].airborne_count() == 0) continue;
-            seen += " " + name(on_sheet[k].kind) + " from " + std::to_string(on_sheet[k].started_tick);
+            seen.append(" ").append(name(on_sheet[k].kind)).append(" from ").append(std::to_string(on_sheet[k].started_tick));
             caught = caught || (on_sheet[k].kind == kind && t - on_sheet[k].started_tick <= within);
         }
         EXPECT_TRUE(caught) << "checkpoint " << t << " wants a " << name(kind) << " splash at most " << within
