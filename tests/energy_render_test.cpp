@@ -363,6 +363,25 @@ TEST_F(EnergyRenderTest, SixOrderingsOfCameraBeamAndGeometry) {
     }
 }
 
+// How much a shot's light brightens a frame: the most in the middle of the image (under
+// the beam) and the most at its four corners (far from it), as ratios of luminance.
+struct LineLightGain {
+    float near, far;
+};
+LineLightGain line_light_gain(const game::ImageRGBA32F& dark, const game::ImageRGBA32F& lit) {
+    const int W = lit.width, H = lit.height;
+    auto luma = [&](const game::ImageRGBA32F& img, int x, int y) {
+        const float* p = &img.pixels[(size_t(y) * size_t(W) + size_t(x)) * 4];
+        return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+    };
+    LineLightGain g{0.0f, 0.0f};
+    for (int y = H / 2 - 5; y < H / 2 + 5; ++y)
+        for (int x = W / 2 - 5; x < W / 2 + 5; ++x) g.near = std::max(g.near, luma(lit, x, y) / luma(dark, x, y));
+    for (int y : {2, H - 3})
+        for (int x : {2, W - 3}) g.far = std::max(g.far, luma(lit, x, y) / luma(dark, x, y));
+    return g;
+}
+
 // The beams as line lights: a shot in the world becomes one line light, and the lit
 // opaque scene (the ground under it) brightens near the beam and nowhere far from it.
 TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
@@ -402,15 +421,7 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     const game::ImageRGBA32F lit = render();
 
     // Under the beam (the middle of the image) against the corners, far from it.
-    auto luma = [&](const game::ImageRGBA32F& img, int x, int y) {
-        const float* p = &img.pixels[(size_t(y) * W + size_t(x)) * 4];
-        return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
-    };
-    float near_gain = 0.0f, far_gain = 0.0f;
-    for (int y = H / 2 - 5; y < H / 2 + 5; ++y)
-        for (int x = W / 2 - 5; x < W / 2 + 5; ++x) near_gain = std::max(near_gain, luma(lit, x, y) / luma(dark, x, y));
-    for (int y : {2, H - 3})
-        for (int x : {2, W - 3}) far_gain = std::max(far_gain, luma(lit, x, y) / luma(dark, x, y));
+    const auto [near_gain, far_gain] = line_light_gain(dark, lit);
     EXPECT_GT(near_gain, 1.5f);
     EXPECT_LT(far_gain, 1.001f);
     std::printf("line light: ground under the beam x%.2f, far corners x%.4f\n", near_gain, far_gain);
@@ -450,15 +461,7 @@ TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
     ASSERT_EQ(world.get<sim::Weapon>().shots().size(), 1u);
     ASSERT_FALSE(world.get<sim::Weapon>().shots()[0].hit());
     const game::ImageRGBA32F lit = render();
-    auto luma = [&](const game::ImageRGBA32F& img, int x, int y) {
-        const float* p = &img.pixels[(size_t(y) * W + size_t(x)) * 4];
-        return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
-    };
-    float near_gain = 0.0f, far_gain = 0.0f;
-    for (int y = H / 2 - 5; y < H / 2 + 5; ++y)
-        for (int x = W / 2 - 5; x < W / 2 + 5; ++x) near_gain = std::max(near_gain, luma(lit, x, y) / luma(dark, x, y));
-    for (int y : {2, H - 3})
-        for (int x : {2, W - 3}) far_gain = std::max(far_gain, luma(lit, x, y) / luma(dark, x, y));
+    const auto [near_gain, far_gain] = line_light_gain(dark, lit);
     EXPECT_GT(near_gain, 1.3f);
     EXPECT_LT(far_gain, 1.001f);
     std::printf("line light: sea under the beam x%.2f, far corners x%.4f\n", near_gain, far_gain);
