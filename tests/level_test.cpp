@@ -510,7 +510,8 @@ TEST(GltfModel, VertexColoursTimesMaterial) {
     int cf = d.accessor(std::vector<float>{0.5f, 0.25f, 1, 1, 1, 1, 0, 0, 0}, 5126, "VEC3", 3);
     int i8 = d.accessor(std::vector<uint8_t>{0, 1, 2}, 5121, "SCALAR", 3);
     int i32 = d.accessor(std::vector<uint32_t>{2, 0, 1}, 5125, "SCALAR", 3);
-    d.j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1, 1, 0.5}}, {"metallicFactor", 0.25}, {"roughnessFactor", 0.75}}}}};
+    d.j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1, 1, 0.5}}, {"metallicFactor", 0.25}, {"roughnessFactor", 0.75}}},
+                         {"emissiveFactor", {0.125, 0.25, 0.5}}}};
     json prims = json::array();
     prims.push_back({{"attributes", {{"POSITION", pos}, {"COLOR_0", c8}}}, {"material", 0}, {"indices", i8}});
     prims.push_back({{"attributes", {{"POSITION", pos}, {"COLOR_0", c16}}}, {"indices", i32}});
@@ -524,6 +525,8 @@ TEST(GltfModel, VertexColoursTimesMaterial) {
     EXPECT_NEAR(m.meshes[0].vertices[2].color.y, 0.2f, 1e-6f);  // 51/255, linear as stored
     EXPECT_FLOAT_EQ(m.meshes[0].metallic, 0.25f);
     EXPECT_FLOAT_EQ(m.meshes[0].roughness, 0.75f);
+    EXPECT_EQ(m.meshes[0].emissive, glm::vec3(0.125f, 0.25f, 0.5f));
+    EXPECT_EQ(m.meshes[1].emissive, glm::vec3(0.0f));  // glTF's default material gives off no light
     EXPECT_NEAR(glm::length(m.meshes[1].vertices[1].color - glm::vec4(0, 1, 1, 1)), 0.0f, 1e-6f);
     EXPECT_EQ(m.meshes[1].indices, (std::vector<uint32_t>{2, 0, 1}));
     EXPECT_NEAR(glm::length(m.meshes[2].vertices[0].color - glm::vec4(0.25f, 0.25f, 1, 0.5f)), 0.0f, 1e-6f);
@@ -564,6 +567,8 @@ TEST(GltfModel, MalformedFilesAreRefused) {
          {"not finite"}},
         {[&](GltfDoc& d) { d.j["nodes"][0]["rotation"] = {0, 0, 0, 0}; }, {"rotation is not a unit quaternion"}},
         {[&](GltfDoc& d) { prim(d)["material"] = 2; }, {"material 2 does not exist"}},
+        {[&](GltfDoc& d) { d.j["materials"] = {{{"emissiveFactor", {0.1, -0.5, 0}}}}; prim(d)["material"] = 0; },
+         {"emissiveFactor is negative"}},
         {[&](GltfDoc& d) { d.j["asset"]["version"] = nullptr; }, {"invalid glTF"}},
     };
     for (size_t i = 0; i < cases.size(); ++i) {

@@ -26,7 +26,11 @@ const Material glass{"glass", {0.035f, 0.05f, 0.065f, 1}, 0.0f, 0.05f};
 const Material tyre{"tyre", {0.018f, 0.018f, 0.02f, 1}, 0.0f, 0.9f};
 const Material chrome{"chrome", {0.6f, 0.6f, 0.62f, 1}, 0.9f, 0.25f};
 const Material trim{"trim", {0.03f, 0.03f, 0.032f, 1}, 0.1f, 0.6f};
-const Material headliner{"headliner", {0.8f, 0.78f, 0.74f, 1}, 0.0f, 0.95f};
+// The cabin's lining: under the roof it sees no sky, so the scene's sky ambient leaves it
+// black; its emission stands in for the daylight coming in through the glass.
+const Material headliner{"headliner", {0.8f, 0.78f, 0.74f, 1}, 0.0f, 0.95f, {0.11f, 0.105f, 0.1f}};
+const Material sun_visor{"sun_visor", {0.6f, 0.58f, 0.55f, 1}, 0.0f, 0.9f, {0.075f, 0.072f, 0.068f}};
+const Material pillar_lining{"pillar_lining", {0.42f, 0.41f, 0.39f, 1}, 0.0f, 0.9f, {0.05f, 0.048f, 0.046f}};
 const Material headlight{"headlight", {0.9f, 0.88f, 0.8f, 1}, 0.0f, 0.1f};
 const Material taillight{"taillight", {0.45f, 0.01f, 0.01f, 1}, 0.0f, 0.2f};
 const Material hull_white{"hull_white", {0.78f, 0.78f, 0.76f, 1}, 0.0f, 0.35f};
@@ -93,7 +97,13 @@ Asset car() {
     // The cabin seen from the driver's seat: a roof lining and A-pillars framing the
     // glass. Both sit inside the cabin's shell, so nothing changes outside.
     box(a.part("headliner", mat::headliner), {}, {-1.1f, 1.4f, -0.76f}, {0.28f, 1.415f, 0.76f}, flat());
-    Part& pillars = a.part("pillars", mat::trim);
+    Part& visors = a.part("sun_visors", mat::sun_visor);  // folded up against the lining
+    for (float side : {-1.0f, 1.0f})
+        box(visors, {}, {0.1f, 1.388f, side < 0 ? -0.7f : 0.12f}, {0.27f, 1.4f, side < 0 ? -0.12f : 0.7f}, flat());
+    Part& mirror = a.part("mirror", mat::trim);  // the rear-view mirror on its stalk
+    box(mirror, {}, {0.19f, 1.33f, -0.015f}, {0.23f, 1.4f, 0.015f}, flat());
+    box(mirror, {}, {0.16f, 1.275f, -0.11f}, {0.2f, 1.335f, 0.11f}, flat());
+    Part& pillars = a.part("pillars", mat::pillar_lining);
     for (float side : {-1.0f, 1.0f}) {
         const vec2 in0 = -slope_n * 0.01f, in1 = -slope_n * 0.05f;
         prism(pillars, {}, {lo + in1, lo + in0, hi + in0, hi + in1}, side < 0 ? -0.77f : 0.69f,

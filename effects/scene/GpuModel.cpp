@@ -18,7 +18,7 @@ GpuModel::GpuModel(const Model& model) : name_(model.name) {
             lo = glm::min(lo, v.position);
             hi = glm::max(hi, v.position);
         }
-        ranges_.push_back({GLsizei(m.indices.size()), idx.size(), m.roughness, m.metallic, m.name, 0.5f * (lo + hi)});
+        ranges_.push_back({GLsizei(m.indices.size()), idx.size(), m.roughness, m.metallic, m.emissive, m.name, 0.5f * (lo + hi)});
         verts.insert(verts.end(), m.vertices.begin(), m.vertices.end());
         for (uint32_t i : m.indices) idx.push_back(base + i);
     }
@@ -41,6 +41,7 @@ void GpuModel::draw_range(const gl::Program& program, bool depth_only, const Ran
     if (!depth_only) {
         program.set("u_roughness", r.roughness);
         program.set("u_metallic", r.metallic);
+        program.set("u_emissive", r.emissive);
     }
     glDrawElements(GL_TRIANGLES, r.index_count, GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(r.first_index * sizeof(uint32_t)));

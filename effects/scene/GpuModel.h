@@ -35,6 +35,7 @@ private:
         GLsizei index_count;
         size_t first_index;
         float roughness, metallic;
+        glm::vec3 emissive;
         std::string name;
         glm::vec3 centre;  // of the mesh's bounding box, model space
     };

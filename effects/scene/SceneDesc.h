@@ -25,6 +25,7 @@ struct MeshData {
     std::vector<uint32_t> indices;  // triangles
     float roughness = 0.8f;
     float metallic = 0.0f;
+    glm::vec3 emissive{0.0f};  // HDR radiance the surface gives off (glTF emissiveFactor)
 };
 
 struct Model {

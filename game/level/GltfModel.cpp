@@ -21,6 +21,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "sim/core/Hash.h"
 
@@ -361,9 +362,13 @@ private:
                              float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3]));
             mesh.metallic = float(pbr.metallicFactor);
             mesh.roughness = float(pbr.roughnessFactor);
+            const std::vector<double>& emissive = gltf_.materials[size_t(prim.material)].emissiveFactor;
+            if (emissive.size() != 3) fail(what + ": emissiveFactor must have 3 numbers");
+            mesh.emissive = glm::vec3(float(emissive[0]), float(emissive[1]), float(emissive[2]));
             if (!std::isfinite(base.x + base.y + base.z + base.w) || !std::isfinite(mesh.metallic) ||
-                !std::isfinite(mesh.roughness))
+                !std::isfinite(mesh.roughness) || !std::isfinite(mesh.emissive.x + mesh.emissive.y + mesh.emissive.z))
                 fail(what + ": material factors are not finite");
+            if (glm::any(glm::lessThan(mesh.emissive, glm::vec3(0.0f)))) fail(what + ": emissiveFactor is negative");
             mesh.metallic = std::clamp(mesh.metallic, 0.0f, 1.0f);
             mesh.roughness = std::clamp(mesh.roughness, 0.0f, 1.0f);
         }

@@ -55,6 +55,7 @@ struct Material {
     std::string name;
     vec4 color;
     float metallic, roughness;
+    vec3 emissive{0.0f};
 };
 
 struct Asset {

@@ -25,6 +25,7 @@ void write_gltf(const Asset& asset, const fs::path& dir) {
         t.pbrMetallicRoughness.baseColorFactor = {mt.color.r, mt.color.g, mt.color.b, mt.color.a};
         t.pbrMetallicRoughness.metallicFactor = mt.metallic;
         t.pbrMetallicRoughness.roughnessFactor = mt.roughness;
+        t.emissiveFactor = {mt.emissive.r, mt.emissive.g, mt.emissive.b};
         m.materials.push_back(t);
     }
     tinygltf::Buffer buffer;
