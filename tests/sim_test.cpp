@@ -298,6 +298,26 @@ TEST(Weapon, ShotGrowsIntoABeamAndFades) {
     EXPECT_TRUE(w.get<sim::Weapon>().shots().empty());
 }
 
+TEST(Weapon, ShotStopsAtAWallAndFliesOverALowOne) {
+    // A wall 7 m ahead of the muzzle (the car faces +x, the muzzle is 3 m ahead of it):
+    // the head stops at its face. Over a box lower than the shot's path it flies on
+    // and lands on the ground further out.
+    auto shot_against = [](float top_m) {
+        sim::LevelDesc level = make_test_level();
+        level.solids.push_back({{10.0f, 0.0f, -20.0f}, {11.0f, top_m, -5.0f}});
+        sim::World w(level);
+        tap(w, Control::Fire);
+        for (int t = 0; t < 90 && !w.get<sim::Weapon>().shots().at(0).hit(); ++t) w.step({});
+        return w.get<sim::Weapon>().shots().at(0);
+    };
+    const sim::Shot wall = shot_against(5.0f);
+    ASSERT_TRUE(wall.hit());
+    EXPECT_NEAR((wall.origin + wall.direction * wall.hit_distance_m).x, 10.0f, 1e-3f);
+    const sim::Shot low = shot_against(1.5f);
+    ASSERT_TRUE(low.hit());
+    EXPECT_GT((low.origin + low.direction * low.hit_distance_m).x, 20.0f);  // past the box, on the ground
+}
+
 TEST(CameraRig, ChaseCameraFollowsBehindAndDriverViewSitsInTheCar) {
     sim::World w(make_test_level());
     run(w, 240, held({Control::Throttle}));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "sim/core/Hash.h"
 #include "sim/player/Player.h"
@@ -86,13 +87,18 @@ void Weapon::advance(Shot& s, const World& world, float dt, std::vector<WaterEnt
         const glm::vec3 a = s.origin + s.direction * before_d, b = s.origin + s.direction * after_d;
         const Surface sa = surface_at(world, a), sb = surface_at(world, b);
         const float above_a = a.y - sa.height_m, above_b = b.y - sb.height_m;
-        if (above_b < 0.0f) {
-            // Where the head crossed the surface, linearly between the two ticks.
-            const float f = above_a > 0.0f ? std::clamp(above_a / (above_a - above_b), 0.0f, 1.0f) : 0.0f;
+        // Where the head crossed the ground or the sea, linearly between the two ticks,
+        // unless it ran into a solid (a wall, a crate) first.
+        std::optional<float> f;
+        if (above_b < 0.0f) f = above_a > 0.0f ? std::clamp(above_a / (above_a - above_b), 0.0f, 1.0f) : 0.0f;
+        const std::optional<float> solid = world.terrain().first_solid_hit(a, b);
+        const bool into_solid = solid && (!f || *solid < *f);
+        if (into_solid) f = solid;
+        if (f) {
             s.hit_age_ticks = s.age_ticks;
-            s.hit_distance_m = before_d + f * (after_d - before_d);
+            s.hit_distance_m = before_d + *f * (after_d - before_d);
             const glm::vec3 at = s.origin + s.direction * s.hit_distance_m;
-            if (surface_at(world, at).water)
+            if (!into_solid && surface_at(world, at).water)
                 water_entries.push_back(
                     WaterEntry{at, s.direction * p_.speed_mps, p_.impact_radius_m, p_.impact_mass_kg, false});
         }

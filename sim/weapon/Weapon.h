@@ -23,7 +23,7 @@ struct Shot {
     glm::vec3 direction{1.0f, 0.0f, 0.0f};
     float phase = 0.0f;  // random per shot: how it sways
     uint32_t age_ticks = 0;
-    uint32_t hit_age_ticks = 0;  // age when the head hit water or ground; 0 while in flight
+    uint32_t hit_age_ticks = 0;  // age when the head hit water, ground or a solid; 0 while in flight
     float hit_distance_m = 0.0f;  // from the origin along the direction, once hit
     std::array<EnergySegment, kSegments> segments{};
     bool hit() const { return hit_age_ticks != 0; }

@@ -41,6 +41,27 @@ bool Terrain::inside_world(glm::vec2 xz) const {
     return xz.x > -h && xz.x < h && xz.y > -h && xz.y < h;
 }
 
+std::optional<float> Terrain::first_solid_hit(glm::vec3 a, glm::vec3 b) const {
+    const glm::vec3 ab = b - a;
+    std::optional<float> first;
+    for (const Aabb& box : level_.solids) {
+        // The slabs' common interval of a + t (b - a), t in [0, 1].
+        float t0 = 0.0f, t1 = 1.0f;
+        for (int k = 0; k < 3 && t0 <= t1; ++k) {
+            if (ab[k] == 0.0f) {
+                if (a[k] < box.min[k] || a[k] > box.max[k]) t1 = -1.0f;
+                continue;
+            }
+            float u0 = (box.min[k] - a[k]) / ab[k], u1 = (box.max[k] - a[k]) / ab[k];
+            if (u0 > u1) std::swap(u0, u1);
+            t0 = std::max(t0, u0);
+            t1 = std::min(t1, u1);
+        }
+        if (t0 <= t1 && (!first || t0 < *first)) first = t0;
+    }
+    return first;
+}
+
 std::optional<glm::vec2> Terrain::resolve_solids(glm::vec2& xz, float radius, float y_min, float y_max) const {
     glm::vec2 total(0.0f);
     bool touched = false;

@@ -23,6 +23,9 @@ public:
     // Push a vertical capsule-like cylinder (centre xz, radius, y range) out of the
     // solids. Returns the total push, or nullopt if nothing was touched.
     std::optional<glm::vec2> resolve_solids(glm::vec2& xz, float radius, float y_min, float y_max) const;
+    // Where the straight path a -> b first enters a solid, as a fraction of the way
+    // (0 if a is inside one), or nullopt if it meets none.
+    std::optional<float> first_solid_hit(glm::vec3 a, glm::vec3 b) const;
 
     const LevelDesc& level() const { return level_; }
 

@@ -6,7 +6,7 @@ namespace sim {
 
 namespace {
 // Bump when a change to the sim alters results for the same inputs.
-constexpr uint64_t kSimVersion = 5;
+constexpr uint64_t kSimVersion = 6;
 }  // namespace
 
 World::World(LevelDesc level, WorldOptions options)
