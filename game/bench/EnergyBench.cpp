@@ -263,6 +263,13 @@ void bench_full_screen(BenchReport& report, bool quick) {
     // Of the full-resolution draw (the bloom's quarter-resolution one bins its own).
     const size_t tiles = pass.tiles().tiles.size(), pairs = pass.tiles().pairs();
     const double pass_ms = time_pass(effects::EnergyLook{}.bloom);
+    // The floor of any pass that integrates per pixel: one segment, still around the eye,
+    // so every pixel of the screen does exactly one closed form.
+    const std::vector<EnergySegment> whole_shot = std::move(shot);
+    shot = {whole_shot.front()};
+    const double one_ms = time_pass(0.0f);
+    const size_t one_tiles = pass.tiles().tiles.size(), one_pairs = pass.tiles().pairs();
+    shot = whole_shot;
 
     // The trivial fill: one full-screen triangle adding a constant to the same colour target.
     const effects::gl::Program fill = effects::gl::Program::from_sources(
@@ -299,6 +306,10 @@ void bench_full_screen(BenchReport& report, bool quick) {
                 "additive, the same scene colour"});
     report.add({"energy", "full-screen energy glow / trivial fill", glow_ms / fill_ms, "x", std::nullopt, false,
                 "same target, same blending, same run"});
+    report.add({"energy", "one closed form a pixel, full screen / trivial fill", one_ms / fill_ms, "x", std::nullopt,
+                false,
+                std::to_string(one_tiles) + " tiles, " + std::to_string(one_pairs) +
+                    " pairs, no bloom: the floor of a per-pixel integral (" + fmt("%.2f", one_ms) + " ms)"});
     report.add({"energy", "full-screen energy pass / trivial fill", pass_ms / fill_ms, "x", 4.0, false,
                 "glow + bloom; same target, same blending, same run"});
 }
