@@ -9,6 +9,7 @@
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
+#include "effects/scene/SkyOcclusionPass.h"
 #include "effects/scene/TonemapPass.h"
 #include "effects/water/WaterPass.h"
 
@@ -18,6 +19,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     std::vector<std::unique_ptr<Pass>> passes;
     passes.push_back(std::make_unique<EnvironmentPass>());
     passes.push_back(std::make_unique<ShadowPass>());
+    passes.push_back(std::make_unique<SkyOcclusionPass>());  // once: the props stay put
     passes.push_back(std::make_unique<EnergyLightPass>());  // before anything is lit
     passes.push_back(std::make_unique<OpaquePass>());
     passes.push_back(std::make_unique<DustPass>());  // shells over the opaque dusty props

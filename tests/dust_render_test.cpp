@@ -23,6 +23,7 @@
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/ShadowPass.h"
+#include "effects/scene/SkyOcclusionPass.h"
 #include "effects/scene/TonemapPass.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
@@ -54,6 +55,7 @@ struct DustStage {
         effects::FrameContext frame{*session.world, camera, scene, {output.id(), width, height}, 0.0};
         environment.render(frame);
         shadow.render(frame);
+        sky.render(frame);
         opaque.render(frame);
         if (with_dust) dust.render(frame);
         tonemap.render(frame);
@@ -73,6 +75,7 @@ struct DustStage {
     effects::SceneResources scene;
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
+    effects::SkyOcclusionPass sky;
     effects::OpaquePass opaque;
     effects::DustPass dust;
     effects::TonemapPass tonemap;

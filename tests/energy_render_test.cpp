@@ -25,6 +25,7 @@
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
+#include "effects/scene/SkyOcclusionPass.h"
 #include "effects/water/WaterPass.h"
 #include "game/capture/Readback.h"
 #include "sim/weapon/Weapon.h"
@@ -399,12 +400,14 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     const effects::Camera cam = effects::make_camera(view, float(W) / float(H));
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
+    effects::SkyOcclusionPass sky;
     effects::OpaquePass opaque;
     effects::EnergyLightPass lights;
     auto render = [&]() {
         effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
         environment.render(frame);
         shadow.render(frame);
+        sky.render(frame);
         lights.render(frame);
         opaque.render(frame);
         return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
@@ -444,13 +447,14 @@ TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
     const effects::Camera cam = effects::make_camera(view, float(W) / float(H));
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
+    effects::SkyOcclusionPass sky;
     effects::EnergyLightPass lights;
     effects::OpaquePass opaque;
     effects::SceneCopyPass copy;
     effects::WaterPass water;
     auto render = [&]() {
         effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
-        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &lights, &opaque, &copy, &water})
+        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &lights, &opaque, &copy, &water})
             p->render(frame);
         return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
     };
@@ -524,11 +528,12 @@ TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
     const effects::Camera cam = look({40.0f, 3.0f, 10.0f}, {40.0f, 0.0f, 30.0f}, W, H);
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
+    effects::SkyOcclusionPass sky;
     effects::OpaquePass opaque;
     effects::SceneCopyPass copy;  // the depth before the water
     effects::WaterPass water;
     effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
-    for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy, &water})
+    for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &opaque, &copy, &water})
         p->render(frame);
     const std::vector<EnergySegment> beam = {segment({40.0f, -3.0f, 30.0f}, {0, 1, 0}, 6.0f, 0.12f, 1.1f)};
 

@@ -23,6 +23,7 @@
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
+#include "effects/scene/SkyOcclusionPass.h"
 #include "effects/scene/TonemapPass.h"
 #include "effects/water/WaterPass.h"
 #include "game/capture/FrameCompare.h"
@@ -72,7 +73,7 @@ struct Stage {
     // The world's tank, or (with `view`) the given one.
     game::ImageRGBA8 render(bool with_fluid, const effects::FluidView* view = nullptr) {
         effects::FrameContext frame{world, camera, scene, {output.id(), kWidth, kHeight}, 0.0};
-        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy, &water})
+        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &opaque, &copy, &water})
             p->render(frame);
         if (with_fluid && view) fluid.draw(frame, *view);
         else if (with_fluid) fluid.render(frame);
@@ -87,6 +88,7 @@ struct Stage {
     effects::Camera camera;
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
+    effects::SkyOcclusionPass sky;
     effects::OpaquePass opaque;
     effects::SceneCopyPass copy;
     effects::WaterPass water;
@@ -301,7 +303,7 @@ struct HarbourStage {
     game::ImageRGBA8 render(const sim::CameraView& view, bool with_fluid) {
         const effects::Camera camera = effects::make_camera(view, float(kW) / float(kH));
         effects::FrameContext frame{*session.world, camera, scene, {output.id(), kW, kH}, 0.0};
-        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy, &water})
+        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &opaque, &copy, &water})
             p->render(frame);
         if (with_fluid) fluid.render(frame);
         tonemap.render(frame);
@@ -313,6 +315,7 @@ struct HarbourStage {
     effects::SceneResources scene;
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
+    effects::SkyOcclusionPass sky;
     effects::OpaquePass opaque;
     effects::SceneCopyPass copy;
     effects::WaterPass water;

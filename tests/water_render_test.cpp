@@ -23,6 +23,7 @@
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
+#include "effects/scene/SkyOcclusionPass.h"
 #include "effects/scene/TonemapPass.h"
 #include "effects/water/SplashSheetMesh.h"
 #include "effects/water/SurfaceLod.h"
@@ -62,7 +63,7 @@ struct Stage {
     // Renders one frame; with a view the water pass draws it, else it reads the world.
     void render(const WaterView* view, double time_s = 0.0) {
         effects::FrameContext frame{world, camera, scene, {output.id(), kWidth, kHeight}, time_s};
-        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &opaque, &copy})
+        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &opaque, &copy})
             p->render(frame);
         if (view)
             water.draw(frame, *view);
@@ -99,6 +100,7 @@ struct Stage {
     effects::Camera camera;
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
+    effects::SkyOcclusionPass sky;
     effects::OpaquePass opaque;
     effects::SceneCopyPass copy;
     effects::WaterPass water;

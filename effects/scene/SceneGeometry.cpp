@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include <glm/common.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
@@ -24,6 +25,16 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
       sea_(make_sea_model(terrain.level().sea_level_m, 3000.0f)),
       sphere_(make_sphere_model(12, 20)) {
     for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
+    for (size_t i = 0; i < desc.props.size(); ++i) {
+        const Model& m = desc.models[size_t(desc.props[i].model)];
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 corner(c & 1 ? m.bounds_max.x : m.bounds_min.x, c & 2 ? m.bounds_max.y : m.bounds_min.y,
+                                   c & 4 ? m.bounds_max.z : m.bounds_min.z);
+            const glm::vec3 p(desc.props[i].transform * glm::vec4(corner, 1.0f));
+            props_min_ = i == 0 && c == 0 ? p : glm::min(props_min_, p);
+            props_max_ = i == 0 && c == 0 ? p : glm::max(props_max_, p);
+        }
+    }
 }
 
 void SceneGeometry::apply_ground(const gl::Program& p) const {
@@ -35,6 +46,14 @@ void SceneGeometry::apply_ground(const gl::Program& p) const {
     }
     p.set("u_shore_z", level_.shore_z_m);
     p.set("u_sea_level", level_.sea_level_m);
+}
+
+void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
+    for (const PropInstance& inst : desc_.props) {
+        p.set("u_model", inst.transform);
+        if (!depth_only) p.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(inst.transform))));
+        models_[size_t(inst.model)]->draw(p, depth_only);
+    }
 }
 
 void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool depth_only) const {
@@ -53,10 +72,7 @@ void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool dep
     terrain_.draw(p, depth_only);
 
     material(0, glm::vec4(1.0f));
-    for (const PropInstance& inst : desc_.props) {
-        place(inst.transform);
-        models_[size_t(inst.model)]->draw(p, depth_only);
-    }
+    draw_props(p, depth_only);
     if (desc_.car_model >= 0) {
         // Wheels and hubcaps (meshes "wheel_fl", "hubcap_rr", ...) turn
         // about their axle (model z) and the front ones steer about their vertical.

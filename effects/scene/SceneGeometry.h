@@ -17,6 +17,11 @@ public:
 
     // Sets u_model (and u_tint, u_surface unless depth_only) per draw.
     void draw(const gl::Program& program, const sim::World& world, bool depth_only) const;
+    // The level's props alone: what stays put, for the top-down sky occlusion.
+    void draw_props(const gl::Program& program, bool depth_only) const;
+    // World-space bounds of the props (min = max = 0 without any).
+    glm::vec3 props_min() const { return props_min_; }
+    glm::vec3 props_max() const { return props_max_; }
     // Uniforms the ground shader needs (roads, shore).
     void apply_ground(const gl::Program& program) const;
     const GpuModel& sea() const { return sea_; }
@@ -26,6 +31,7 @@ private:
     const sim::LevelDesc& level_;
     std::vector<std::unique_ptr<GpuModel>> models_;
     GpuModel terrain_, sea_, sphere_;
+    glm::vec3 props_min_{0.0f}, props_max_{0.0f};
 };
 
 }  // namespace effects

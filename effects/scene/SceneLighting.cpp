@@ -7,7 +7,7 @@
 
 namespace effects {
 
-SceneLighting::SceneLighting(int env_size, int shadow_size)
+SceneLighting::SceneLighting(int env_size, int shadow_size, int sky_size)
     : env_levels_(gl::Texture::full_mip_levels(env_size, env_size)) {
     env_cube = gl::Texture::create_cube("sky.environment", GL_RGBA16F, env_size, env_levels_);
     env_cube.set_filter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
@@ -15,6 +15,12 @@ SceneLighting::SceneLighting(int env_size, int shadow_size)
     shadow_map.set_filter(GL_LINEAR, GL_LINEAR);
     shadow_map.set_wrap(GL_CLAMP_TO_EDGE);
     shadow_map.set_depth_compare(true, GL_LEQUAL);
+    sky_map = gl::Texture::create_2d("sky.occlusion_map", GL_DEPTH_COMPONENT32F, sky_size, sky_size);
+    sky_map.set_filter(GL_LINEAR, GL_LINEAR);
+    sky_map.set_wrap(GL_CLAMP_TO_EDGE);
+    sky_map.set_depth_compare(true, GL_LEQUAL);
+    const float far = 1.0f;
+    glClearTexImage(sky_map.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
     set_line_lights({});
 }
 
@@ -51,8 +57,11 @@ void SceneLighting::apply(const gl::Program& p) const {
     p.set("u_env_max_lod", env_max_lod());
     p.set("u_env", int(kEnvUnit));
     p.set("u_shadow_map", int(kShadowUnit));
+    p.set("u_sky_matrix", bias * sky_view_proj);
+    p.set("u_sky_map", int(kSkyUnit));
     env_cube.bind(kEnvUnit);
     shadow_map.bind(kShadowUnit);
+    sky_map.bind(kSkyUnit);
     glBindBufferBase(GL_UNIFORM_BUFFER, kLineLightBinding, line_lights_.id());
 }
 

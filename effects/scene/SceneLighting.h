@@ -31,10 +31,11 @@ class SceneLighting {
 public:
     static constexpr GLuint kEnvUnit = 14;
     static constexpr GLuint kShadowUnit = 15;
+    static constexpr GLuint kSkyUnit = 13;
     static constexpr GLuint kLineLightBinding = 3;
     static constexpr size_t kMaxLineLights = 16;  // as lighting.glsl's kMaxLineLights
 
-    SceneLighting(int env_size, int shadow_size);
+    SceneLighting(int env_size, int shadow_size, int sky_size = 1024);
 
     // Sky uniforms only (sky background, environment faces).
     void apply_sky(const gl::Program& program) const;
@@ -45,6 +46,10 @@ public:
     glm::mat4 shadow_view_proj{1.0f};
     gl::Texture env_cube;
     gl::Texture shadow_map;
+    // Top-down depth of the props (SkyOcclusionPass): what lies under a roof sees no
+    // sky. Cleared to "nothing above" until the pass draws it.
+    glm::mat4 sky_view_proj{1.0f};
+    gl::Texture sky_map;
     float env_max_lod() const { return float(env_levels_ - 1); }
     // The line lights of the frame (none unless set; beyond kMaxLineLights ignored).
     void set_line_lights(std::span<const LineLight> lights);

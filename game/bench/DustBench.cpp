@@ -17,6 +17,7 @@
 #include "effects/gl/Program.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/ShadowPass.h"
+#include "effects/scene/SkyOcclusionPass.h"
 #include "game/capture/FrameCapture.h"
 #include "game/level/LevelLoader.h"
 #include "game/session/GameSession.h"
@@ -127,9 +128,11 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
     effects::FrameContext frame{*s.world, camera, scene, capture.output(), 0.0};
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
+    effects::SkyOcclusionPass sky;
     effects::DustPass dust;
     environment.render(frame);
     shadow.render(frame);
+    sky.render(frame);
 
     const std::vector<size_t> props = dusty_scene_props(s.level.scene, *field);
     std::vector<std::unique_ptr<effects::GpuModel>> models;

@@ -4,6 +4,8 @@ uniform sampler2DShadow u_shadow_map;
 uniform mat4 u_shadow_matrix;  // world -> shadow texture coordinates and depth
 uniform samplerCube u_env;
 uniform float u_env_max_lod;
+uniform sampler2DShadow u_sky_map;  // the props' top-down depth (SkyOcclusionPass)
+uniform mat4 u_sky_matrix;          // world -> its texture coordinates and depth
 
 // Line lights (SceneLighting::set_line_lights): the energy weapon's beams light the
 // surfaces near them. Ends, reach, radiant intensity per metre and colour.
@@ -50,6 +52,19 @@ float sun_visibility(vec3 world_pos, vec3 n) {
     return sum / 9.0;
 }
 
+// How much of the sky p sees: 0 under a roof, 1 in the open, soft across a texel (the
+// map filters its comparisons). Lifted off the surface so a roof sees past itself.
+float sky_visibility(vec3 world_pos, vec3 n) {
+    vec4 s = u_sky_matrix * vec4(world_pos + n * 0.1, 1.0);
+    vec3 p = s.xyz / s.w;
+    if (any(lessThan(p.xy, vec2(0.0))) || any(greaterThan(p.xy, vec2(1.0)))) return 1.0;
+    return texture(u_sky_map, vec3(p.xy, p.z - 0.002));
+}
+
+// Under a roof the ambient light is what the walls and floor pass on: a grey fraction of
+// the sky's, not its blue.
+const float kIndoorAmbient = 0.5;
+
 vec3 fresnel_schlick(float cos_theta, vec3 f0) {
     return f0 + (1.0 - f0) * pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);
 }
@@ -77,7 +92,8 @@ vec3 env_brdf(vec3 f0, float roughness, float nv) {
     return f0 * ab.x + ab.y;
 }
 
-vec3 shade_surface(vec3 base, float roughness, float metallic, vec3 world_pos, vec3 n, vec3 eye) {
+// Lit by the sun, the line lights and the sky as far as the surface sees it (sky: 0..1).
+vec3 shade_surface_seeing_sky(vec3 base, float roughness, float metallic, vec3 world_pos, vec3 n, vec3 eye, float sky) {
     vec3 v = normalize(eye - world_pos);
     vec3 l = u_sun_dir;
     float nl = max(dot(n, l), 0.0);
@@ -87,10 +103,17 @@ vec3 shade_surface(vec3 base, float roughness, float metallic, vec3 world_pos, v
     vec3 f = fresnel_schlick(max(dot(n, v), 0.0), f0);
     vec3 direct = (diffuse_colour / 3.14159265 * (1.0 - f) + f * ggx_specular(n, v, l, roughness)) * u_sun_radiance * nl * shadow;
     direct += diffuse_colour / 3.14159265 * line_light_irradiance(world_pos, n);
-    vec3 ambient = textureLod(u_env, n, u_env_max_lod).rgb * diffuse_colour * (0.6 + 0.4 * n.y);
+    vec3 sky_light = textureLod(u_env, n, u_env_max_lod).rgb;
+    vec3 indoor = vec3(dot(sky_light, vec3(0.2126, 0.7152, 0.0722)) * kIndoorAmbient);
+    vec3 ambient = mix(indoor, sky_light, sky) * diffuse_colour * (0.6 + 0.4 * n.y);
     vec3 r = reflect(-v, n);
-    vec3 spec_env = textureLod(u_env, r, roughness * u_env_max_lod).rgb * env_brdf(f0, roughness, max(dot(n, v), 1e-3));
+    vec3 spec_env = textureLod(u_env, r, roughness * u_env_max_lod).rgb * env_brdf(f0, roughness, max(dot(n, v), 1e-3)) *
+                    mix(kIndoorAmbient, 1.0, sky);
     return direct + ambient + spec_env;
+}
+
+vec3 shade_surface(vec3 base, float roughness, float metallic, vec3 world_pos, vec3 n, vec3 eye) {
+    return shade_surface_seeing_sky(base, roughness, metallic, world_pos, n, eye, sky_visibility(world_pos, n));
 }
 
 // Aerial perspective: distant things fade into the sky's horizon colour.

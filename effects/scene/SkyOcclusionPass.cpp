@@ -1,0 +1,46 @@
+#include "effects/scene/SkyOcclusionPass.h"
+
+#include <algorithm>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace effects {
+
+SkyOcclusionPass::SkyOcclusionPass()
+    : program_(gl::Program::from_files("sky_occlusion", {"scene/shadow.vert.glsl", "scene/shadow.frag.glsl"})),
+      fbo_(gl::Framebuffer::create("sky_occlusion")) {}
+
+void SkyOcclusionPass::render(const FrameContext& frame) {
+    if (drawn_) return;
+    drawn_ = true;
+    SceneLighting& lighting = frame.scene.lighting;
+    const SceneGeometry& geometry = frame.scene.geometry;
+    const glm::vec3 lo = geometry.props_min(), hi = geometry.props_max();
+    if (!(hi.x > lo.x && hi.z > lo.z)) return;  // no props: nothing above anything
+    // Looking straight down from above the highest prop over their square footprint.
+    const glm::vec2 centre(0.5f * (lo.x + hi.x), 0.5f * (lo.z + hi.z));
+    const float half = 0.5f * std::max(hi.x - lo.x, hi.z - lo.z) + 1.0f;
+    const float top = hi.y + 1.0f;
+    const glm::mat4 view =
+        glm::lookAt(glm::vec3(centre.x, top, centre.y), glm::vec3(centre.x, top - 1.0f, centre.y), glm::vec3(0, 0, -1));
+    const glm::mat4 proj = glm::ortho(-half, half, -half, half, 0.0f, top - lo.y + 1.0f);
+    lighting.sky_view_proj = proj * view;
+
+    fbo_.attach_depth(lighting.sky_map);
+    fbo_.set_draw_buffers({});
+    fbo_.check_complete();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    const int size = lighting.sky_map.width();
+    glViewport(0, 0, size, size);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);  // roofs are seen from above and below alike
+    glClear(GL_DEPTH_BUFFER_BIT);
+    program_.use();
+    program_.set("u_view_proj", lighting.sky_view_proj);
+    geometry.draw_props(program_, true);
+}
+
+}  // namespace effects
