@@ -55,7 +55,7 @@ struct DustStage {
         effects::FrameContext frame{*session.world, camera, scene, {output.id(), width, height}, 0.0};
         environment.render(frame);
         shadow.render(frame);
-        sky.render(frame);
+        if (sky_occlusion) sky.render(frame);
         opaque.render(frame);
         if (with_dust) dust.render(frame);
         tonemap.render(frame);
@@ -71,6 +71,7 @@ struct DustStage {
     sim::DustField& field() { return session.world->get<sim::DustField>(); }
 
     int width, height;
+    bool sky_occlusion = true;
     game::GameSession session;
     effects::SceneResources scene;
     effects::EnvironmentPass environment;
@@ -315,3 +316,38 @@ TEST_F(DustRenderTest, CloseUpOfTheCratesMatchesItsGolden) {
     const game::CompareResult r = game::compare_frames(dusty, game::read_png(golden));
     EXPECT_TRUE(r.passed) << golden << ": " << r.summary;
 }
+
+// Inside the warehouse the floor loses the sky's blue ambient light to its roof; out
+// on the shore road, away from every prop, nothing changes.
+TEST_F(DustRenderTest, UnderTheWarehouseRoofTheSkyLightGoesAndOutsideNothingChanges) {
+    DustStage roofed_stage, open_sky;
+    open_sky.sky_occlusion = false;
+    sim::CameraView floor;
+    floor.eye = {-36.0f, 2.5f, -33.0f};
+    floor.target = {-40.0f, 1.2f, -38.0f};
+    floor.fov_y_deg = 50.0f;
+    sim::CameraView road;
+    road.eye = {-80.0f, 4.0f, -30.0f};
+    road.target = {-80.0f, 1.0f, -10.0f};
+    road.fov_y_deg = 50.0f;
+    const game::ImageRGBA8 roofed = roofed_stage.render(floor, false), unroofed = open_sky.render(floor, false);
+    save(roofed, "sky_occlusion_floor.png");
+    save(unroofed, "sky_occlusion_floor_open.png");
+    auto blueness = [](const game::ImageRGBA8& img) {  // blue over red, the lower half
+        double b = 0.0, r = 0.0;
+        for (size_t i = img.pixels.size() / 2; i < img.pixels.size(); i += 4) {
+            r += img.pixels[i];
+            b += img.pixels[i + 2];
+        }
+        return b / std::max(r, 1.0);
+    };
+    const glm::ivec2 centre(kWidth / 2, 3 * kHeight / 4);
+    EXPECT_LT(stats(roofed, nullptr, centre, 30).luma, 0.8 * stats(unroofed, nullptr, centre, 30).luma);
+    EXPECT_LT(blueness(roofed), 1.2);
+    EXPECT_GT(blueness(unroofed), 1.5);
+    const game::ImageRGBA8 outside = roofed_stage.render(road, false), outside_open = open_sky.render(road, false);
+    save(outside, "sky_occlusion_road.png");
+    const game::CompareResult same = game::compare_frames(outside, outside_open);
+    EXPECT_TRUE(same.passed) << same.summary;
+}
+
