@@ -379,59 +379,32 @@ void RainSim::push_particles(bool carry) {
 }
 
 void RainSim::collide_particles() {
-    // Buckets one particle diameter wide over the particles' bounding box: a particle
-    // only meets others in its own and the eight neighbouring buckets.
-    const float bucket = 2.0f * particle_r_m_;
-    glm::vec2 lo = particles_.front().pos_m, hi = lo;
-    for (const WaterParticle& q : particles_) {
-        lo = glm::min(lo, q.pos_m);
-        hi = glm::max(hi, q.pos_m);
-    }
-    const int bc = int((hi.x - lo.x) / bucket) + 1, br = int((hi.y - lo.y) / bucket) + 1;
-    auto key = [&](glm::vec2 p) {
-        int i = std::min(int((p.x - lo.x) / bucket), bc - 1), j = std::min(int((p.y - lo.y) / bucket), br - 1);
-        return j * bc + i;
-    };
-    bucket_start_.assign(size_t(bc) * size_t(br) + 1, 0);
-    for (const WaterParticle& q : particles_) ++bucket_start_[size_t(key(q.pos_m)) + 1];
-    for (size_t k = 1; k < bucket_start_.size(); ++k) bucket_start_[k] += bucket_start_[k - 1];
-    bucket_items_.assign(particles_.size(), 0);
-    bucket_fill_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
-    for (size_t i = 0; i < particles_.size(); ++i)
-        bucket_items_[size_t(bucket_fill_[size_t(key(particles_[i].pos_m))]++)] = int32_t(i);
-    // Jacobi: every push from this tick's positions, then all applied. Each pair once:
-    // a bucket with itself and with its four neighbours ahead (right, and the row above).
-    push_.assign(particles_.size(), glm::vec2(0.0f));
     const float two_r = 2.0f * particle_r_m_, two_r2 = two_r * two_r;
-    auto meet = [&](size_t i, size_t j) {
-        const glm::vec2 d = particles_[i].pos_m - particles_[j].pos_m;
-        const float d2 = dot(d, d);
-        if (d2 >= two_r2) return;
-        const float dist = std::sqrt(d2);
-        // Coincident centres part along a direction fixed by their order.
-        const glm::vec2 dir = dist > 1e-7f ? d / dist : glm::vec2(i < j ? 1.0f : -1.0f, 0.0f);
-        const glm::vec2 push = dir * (0.5f * (two_r - dist) * (1.0f + p_.restitution));
-        push_[i] += push;
-        push_[j] -= push;
-    };
-    constexpr int kAheadI[4] = {1, -1, 0, 1}, kAheadJ[4] = {0, 1, 1, 1};
-    for (int kj = 0; kj < br; ++kj)
-        for (int ki = 0; ki < bc; ++ki) {
-            const int k = kj * bc + ki;
-            const int32_t b0 = bucket_start_[size_t(k)], b1 = bucket_start_[size_t(k) + 1];
-            for (int32_t a = b0; a < b1; ++a) {
-                const size_t i = size_t(bucket_items_[size_t(a)]);
-                for (int32_t b = a + 1; b < b1; ++b) meet(i, size_t(bucket_items_[size_t(b)]));
-                for (int n = 0; n < 4; ++n) {
-                    const int ni = ki + kAheadI[n], nj = kj + kAheadJ[n];
-                    if (ni < 0 || ni >= bc || nj >= br) continue;
-                    const int nk = nj * bc + ni;
-                    for (int32_t b = bucket_start_[size_t(nk)]; b < bucket_start_[size_t(nk) + 1]; ++b)
-                        meet(i, size_t(bucket_items_[size_t(b)]));
-                }
-            }
-        }
-    for (size_t i = 0; i < particles_.size(); ++i) particles_[i].pos_m += push_[i];
+    const float bounce = 1.0f + p_.restitution;
+    buckets_.build(particles_, two_r);
+    // Jacobi: every push from this tick's positions, then all applied. Slot a's own
+    // push is summed in a register: its partners are other slots, so the sums are the
+    // same, in the same order, as adding to push_[a] pair by pair.
+    const int32_t n = buckets_.slots();
+    push_.assign(size_t(n), glm::vec2(0.0f));
+    for (int32_t a = 0; a < n; ++a) {
+        const glm::vec2 pa = buckets_.position(a);
+        const int32_t i = buckets_.particle(a);
+        glm::vec2 push_a = push_[size_t(a)];
+        buckets_.for_each_partner(a, [&](int32_t b) {
+            const glm::vec2 d = pa - buckets_.position(b);
+            const float d2 = dot(d, d);
+            if (d2 >= two_r2) return;
+            const float dist = std::sqrt(d2);
+            // Coincident centres part along a direction fixed by their order.
+            const glm::vec2 dir = dist > 1e-7f ? d / dist : glm::vec2(i < buckets_.particle(b) ? 1.0f : -1.0f, 0.0f);
+            const glm::vec2 push = dir * (0.5f * (two_r - dist) * bounce);
+            push_a += push;
+            push_[size_t(b)] -= push;
+        });
+        push_[size_t(a)] = push_a;
+    }
+    for (int32_t a = 0; a < n; ++a) particles_[size_t(buckets_.particle(a))].pos_m += push_[size_t(a)];
 }
 
 bool RainSim::near_blade(glm::vec2 pos_m, float reach_m) const {

@@ -15,7 +15,9 @@
 
 #include "sim/core/Rng.h"
 #include "sim/rain/GlassSurface.h"
+#include "sim/rain/ParticleBuckets.h"
 #include "sim/rain/RainParams.h"
+#include "sim/rain/WaterParticle.h"
 #include "sim/rain/WiperBlade.h"
 #include "sim/rain/WiperMotor.h"
 #include "sim/world/Subsystem.h"
@@ -35,13 +37,6 @@ struct RainDrop {
     bool dead() const { return flags & kDead; }
 };
 static_assert(sizeof(RainDrop) == 36, "RainDrop is hashed as raw words");
-
-struct WaterParticle {
-    glm::vec2 pos_m{0.0f};
-    float mass_mg = 0.0f;
-    uint32_t dead = 0;
-};
-static_assert(sizeof(WaterParticle) == 16, "WaterParticle is hashed as raw words");
 
 // Where the water went: what is on the glass is added - evaporated - drained, to
 // rounding. Only trailing drops evaporate; drained water ran or was pushed off an edge.
@@ -115,8 +110,8 @@ private:
     float hold_ref_;                     // what holds a slide-mass drop, m/s^2
     float slide_r_m_;
 
-    // Scratch for the particle collisions (bucketed by cell).
-    std::vector<int32_t> bucket_start_, bucket_items_, bucket_fill_;
+    // Scratch for the particle collisions: the buckets and each slot's push.
+    ParticleBuckets buckets_;
     std::vector<glm::vec2> push_;
 };
 
