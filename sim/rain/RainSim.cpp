@@ -420,6 +420,11 @@ bool RainSim::near_blade(glm::vec2 pos_m, float reach_m) const {
 
 void RainSim::particles_to_grid() {
     const int reach = p_.defer_search_cells;
+    // Which cells hold a drop heavy enough to defer a conversion near it, kept up to
+    // date as particles join drops: the search reads bytes, not drops.
+    heavy_.resize(cell_drop_.size());
+    for (size_t c = 0; c < cell_drop_.size(); ++c)
+        heavy_[c] = cell_drop_[c] >= 0 && drops_[size_t(cell_drop_[c])].mass_mg > p_.defer_mass_mg;
     for (WaterParticle& q : particles_) {
         if (!glass_.contains(q.pos_m)) {  // pushed off the edge of the glass
             ledger_.drained_mg += q.mass_mg;
@@ -429,18 +434,15 @@ void RainSim::particles_to_grid() {
         if (near_blade(q.pos_m, p_.band_m)) continue;
         // Deferred while a big drop sits in the square around the target cell, so that a
         // reversal does not pour the whole bead into one giant drop.
-        const glm::ivec2 c = glass_.cell_xy(glass_.cell_of(q.pos_m));
+        const int cell = glass_.cell_of(q.pos_m);
+        const glm::ivec2 c = glass_.cell_xy(cell);
         bool defer = false;
         for (int j = std::max(c.y - reach, 0); j <= std::min(c.y + reach, glass_.rows() - 1) && !defer; ++j)
-            for (int i = std::max(c.x - reach, 0); i <= std::min(c.x + reach, glass_.cols() - 1); ++i) {
-                const int32_t at = cell_drop_[size_t(j * glass_.cols() + i)];
-                if (at >= 0 && drops_[size_t(at)].mass_mg > p_.defer_mass_mg) {
-                    defer = true;
-                    break;
-                }
-            }
+            for (int i = std::max(c.x - reach, 0); i <= std::min(c.x + reach, glass_.cols() - 1); ++i)
+                defer |= heavy_[size_t(j * glass_.cols() + i)] != 0;
         if (defer) continue;
-        new_drop(q.pos_m, q.mass_mg, 0);
+        const int32_t at = new_drop(q.pos_m, q.mass_mg, 0);
+        heavy_[size_t(cell)] = drops_[size_t(at)].mass_mg > p_.defer_mass_mg;
         q.dead = 1;
     }
 }

@@ -104,6 +104,7 @@ private:
     std::vector<WaterParticle> particles_;
     std::vector<int32_t> cell_drop_;     // drop index per cell, -1 for none
     std::vector<uint32_t> wet_tick_;     // tick + 1 a drop last ran into the cell, 0 never
+    std::vector<uint8_t> heavy_;         // particles_to_grid: the cell's drop defers conversions
     RainLedger ledger_;
     uint64_t tick_ = 0;
     float particle_r_m_;
