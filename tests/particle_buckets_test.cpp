@@ -26,6 +26,18 @@ std::vector<sim::WaterParticle> scattered(uint64_t seed, int loose, int piled) {
     return out;
 }
 
+// Every pair of slots the buckets give, in their order, as pair(a, b) calls.
+template <typename Pair2>
+void for_each_pair(const sim::ParticleBuckets& buckets, Pair2&& pair) {
+    for (int32_t k = 0; k < buckets.buckets(); ++k)
+        for (int32_t a = buckets.begin(k); a < buckets.end(k); ++a) {
+            for (int32_t b = a + 1; b < buckets.end(k); ++b) pair(a, b);
+            buckets.for_each_ahead(k, [&](int32_t first, int32_t last) {
+                for (int32_t b = first; b < last; ++b) pair(a, b);
+            });
+        }
+}
+
 std::set<Pair> brute_force(const std::vector<sim::WaterParticle>& ps, float reach_m) {
     std::set<Pair> out;
     for (size_t i = 0; i < ps.size(); ++i)
@@ -45,19 +57,23 @@ TEST(RainParticleBuckets, FindEveryPairInReachOnceLikeBruteForce) {
         ASSERT_EQ(buckets.slots(), int32_t(ps.size()));
 
         std::set<int32_t> seen;
-        std::set<Pair> found;
         for (int32_t a = 0; a < buckets.slots(); ++a) {
             const int32_t i = buckets.particle(a);
             EXPECT_TRUE(seen.insert(i).second) << "particle " << i << " in two slots";
             EXPECT_EQ(buckets.position(a), ps[size_t(i)].pos_m);
-            buckets.for_each_partner(a, [&](int32_t b) {
-                EXPECT_GT(b, a) << "a pair comes from its first slot";
-                const int32_t j = buckets.particle(b);
-                const glm::vec2 d = buckets.position(a) - buckets.position(b);
-                if (d.x * d.x + d.y * d.y >= reach * reach) return;
-                EXPECT_TRUE(found.insert({std::min(i, j), std::max(i, j)}).second) << "pair " << i << ", " << j << " twice";
-            });
         }
+        ASSERT_EQ(buckets.end(buckets.buckets() - 1), buckets.slots());
+        std::set<Pair> found;
+        int32_t last_a = 0;
+        for_each_pair(buckets, [&](int32_t a, int32_t b) {
+            EXPECT_GT(b, a) << "a pair comes from its first slot";
+            EXPECT_GE(a, last_a) << "slots in turn";
+            last_a = a;
+            const int32_t i = buckets.particle(a), j = buckets.particle(b);
+            const glm::vec2 d = buckets.position(a) - buckets.position(b);
+            if (d.x * d.x + d.y * d.y >= reach * reach) return;
+            EXPECT_TRUE(found.insert({std::min(i, j), std::max(i, j)}).second) << "pair " << i << ", " << j << " twice";
+        });
         EXPECT_EQ(found, brute_force(ps, reach)) << "seed " << seed;
     }
 }
@@ -67,12 +83,11 @@ TEST(RainParticleBuckets, ABucketKeepsItsParticlesInIndexOrder) {
     std::vector<sim::WaterParticle> ps = {{{0.001f, 0.0f}, 1.0f, 0u}, {{0.0f, 0.001f}, 1.0f, 0u}, {{0.0f, 0.0f}, 1.0f, 0u}};
     sim::ParticleBuckets buckets;
     buckets.build(ps, 0.01f);
-    std::vector<int32_t> partners;
-    for (int32_t a = 0; a < buckets.slots(); ++a) {
-        EXPECT_EQ(buckets.particle(a), a);
-        buckets.for_each_partner(a, [&](int32_t b) { partners.push_back(b); });
-    }
-    EXPECT_EQ(partners, (std::vector<int32_t>{1, 2, 2}));
+    ASSERT_EQ(buckets.buckets(), 1);
+    for (int32_t a = 0; a < buckets.slots(); ++a) EXPECT_EQ(buckets.particle(a), a);
+    std::vector<Pair> pairs;
+    for_each_pair(buckets, [&](int32_t a, int32_t b) { pairs.push_back({a, b}); });
+    EXPECT_EQ(pairs, (std::vector<Pair>{{0, 1}, {0, 2}, {1, 2}}));
 }
 
 }  // namespace

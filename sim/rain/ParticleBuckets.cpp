@@ -25,13 +25,11 @@ void ParticleBuckets::build(const std::vector<WaterParticle>& particles, float b
     }
     for (size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
     fill_.assign(start_.begin(), start_.end() - 1);
-    slot_bucket_.resize(particles.size());
     slot_particle_.resize(particles.size());
     slot_pos_.resize(particles.size());
     for (size_t i = 0; i < particles.size(); ++i) {
         const int32_t k = particle_bucket_[i];
         const size_t s = size_t(fill_[size_t(k)]++);
-        slot_bucket_[s] = k;
         slot_particle_[s] = int32_t(i);
         slot_pos_[s] = particles[i].pos_m;
     }

@@ -18,24 +18,26 @@ public:
     // Sorts `particles` (not empty) into buckets `bucket_m` wide.
     void build(const std::vector<WaterParticle>& particles, float bucket_m);
 
-    int32_t slots() const { return int32_t(slot_pos_.size()); }
+    int32_t slots() const { return int32_t(slot_pos_.size()); }  // one per particle
     glm::vec2 position(int32_t slot) const { return slot_pos_[size_t(slot)]; }
     int32_t particle(int32_t slot) const { return slot_particle_[size_t(slot)]; }
 
-    // Calls partner(b) for every slot b that slot a meets, so that over a = 0, 1, ...
-    // each pair of slots in one or in neighbouring buckets comes once, a before b: the
-    // later slots of a's bucket, then those of the four buckets ahead (right, and
-    // up-left, up, up-right in the row above), each in slot order.
-    template <typename Partner>
-    void for_each_partner(int32_t a, Partner&& partner) const {
-        const int32_t k = slot_bucket_[size_t(a)];
-        for (int32_t b = a + 1; b < start_[size_t(k) + 1]; ++b) partner(b);
+    // Two particles in reach are in one bucket or in neighbouring ones. Each pair of
+    // them comes once, in a fixed order, from the buckets k = 0, 1, ... and their slots
+    // a in turn: a meets the later slots of its own bucket, then the slots of the four
+    // buckets ahead of k (right, and up-left, up, up-right in the row above).
+    int32_t buckets() const { return int32_t(start_.size()) - 1; }
+    int32_t begin(int32_t k) const { return start_[size_t(k)]; }
+    int32_t end(int32_t k) const { return start_[size_t(k) + 1]; }
+    // Calls slots(first, last) for each bucket ahead of k in that order (last excluded).
+    template <typename Slots>
+    void for_each_ahead(int32_t k, Slots&& slots) const {
         const int ki = k % cols_, kj = k / cols_;
         for (int n = 0; n < 4; ++n) {
             const int ni = ki + kAheadI[n], nj = kj + kAheadJ[n];
             if (ni < 0 || ni >= cols_ || nj >= rows_) continue;
-            const size_t nk = size_t(nj * cols_ + ni);
-            for (int32_t b = start_[nk]; b < start_[nk + 1]; ++b) partner(b);
+            const int32_t nk = nj * cols_ + ni;
+            slots(begin(nk), end(nk));
         }
     }
 
@@ -46,7 +48,7 @@ private:
     std::vector<int32_t> start_;          // first slot of each bucket, and the slot count last
     std::vector<int32_t> fill_;           // scratch for the sort
     std::vector<int32_t> particle_bucket_;
-    std::vector<int32_t> slot_bucket_, slot_particle_;
+    std::vector<int32_t> slot_particle_;
     std::vector<glm::vec2> slot_pos_;
 };
 

@@ -137,7 +137,7 @@ void RainSim::advance(float intensity, WiperMode wipers, float car_speed_mps, co
         if (b.turning() != 0.0f) sweep(b);
     if (!particles_.empty()) {
         push_particles(true);
-        for (int k = 0; k < p_.collision_iterations; ++k) collide_particles();
+        for (int k = 0; k < p_.collision_iterations; ++k) collider_.collide(particles_, particle_r_m_, p_.restitution);
         push_particles(false);  // the blade has the last word: nothing is left inside it
         particles_to_grid();
     }
@@ -376,35 +376,6 @@ void RainSim::push_particles(bool carry) {
             q.pos_m += normal * (side * target - s);
         }
     }
-}
-
-void RainSim::collide_particles() {
-    const float two_r = 2.0f * particle_r_m_, two_r2 = two_r * two_r;
-    const float bounce = 1.0f + p_.restitution;
-    buckets_.build(particles_, two_r);
-    // Jacobi: every push from this tick's positions, then all applied. Slot a's own
-    // push is summed in a register: its partners are other slots, so the sums are the
-    // same, in the same order, as adding to push_[a] pair by pair.
-    const int32_t n = buckets_.slots();
-    push_.assign(size_t(n), glm::vec2(0.0f));
-    for (int32_t a = 0; a < n; ++a) {
-        const glm::vec2 pa = buckets_.position(a);
-        const int32_t i = buckets_.particle(a);
-        glm::vec2 push_a = push_[size_t(a)];
-        buckets_.for_each_partner(a, [&](int32_t b) {
-            const glm::vec2 d = pa - buckets_.position(b);
-            const float d2 = dot(d, d);
-            if (d2 >= two_r2) return;
-            const float dist = std::sqrt(d2);
-            // Coincident centres part along a direction fixed by their order.
-            const glm::vec2 dir = dist > 1e-7f ? d / dist : glm::vec2(i < buckets_.particle(b) ? 1.0f : -1.0f, 0.0f);
-            const glm::vec2 push = dir * (0.5f * (two_r - dist) * bounce);
-            push_a += push;
-            push_[size_t(b)] -= push;
-        });
-        push_[size_t(a)] = push_a;
-    }
-    for (int32_t a = 0; a < n; ++a) particles_[size_t(buckets_.particle(a))].pos_m += push_[size_t(a)];
 }
 
 bool RainSim::near_blade(glm::vec2 pos_m, float reach_m) const {

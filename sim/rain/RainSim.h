@@ -15,7 +15,7 @@
 
 #include "sim/core/Rng.h"
 #include "sim/rain/GlassSurface.h"
-#include "sim/rain/ParticleBuckets.h"
+#include "sim/rain/ParticleCollider.h"
 #include "sim/rain/RainParams.h"
 #include "sim/rain/WaterParticle.h"
 #include "sim/rain/WiperBlade.h"
@@ -87,7 +87,6 @@ private:
     bool step_cell(size_t i);  // false when the drop left the glass
     void sweep(const WiperBlade& blade);
     void push_particles(bool carry);
-    void collide_particles();
     void particles_to_grid();
     void compact();
     float affinity(int cell) const;
@@ -110,10 +109,7 @@ private:
     float particle_r_m_;
     float hold_ref_;                     // what holds a slide-mass drop, m/s^2
     float slide_r_m_;
-
-    // Scratch for the particle collisions: the buckets and each slot's push.
-    ParticleBuckets buckets_;
-    std::vector<glm::vec2> push_;
+    ParticleCollider collider_;          // scratch for the particle collisions
 };
 
 }  // namespace sim
