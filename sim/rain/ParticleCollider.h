@@ -7,8 +7,9 @@
 // The sums are part of the hashed state, so their order is fixed: pairs in the order
 // ParticleBuckets gives them, each push added to the first particle of the pair and
 // taken from the second as the pair comes. Four pairs are measured at a time (SSE,
-// the same IEEE operations as one at a time); a pair out of reach adds a zero, which
-// leaves a sum that starts at +0 unchanged.
+// the same IEEE operations as one at a time); a pair out of reach adds +0, which
+// leaves every sum as it was (they start at +0 and so can never be -0). The test
+// holds it to the bits of the plain pair-by-pair pass.
 #include <cstdint>
 #include <vector>
 
