@@ -137,7 +137,7 @@ void RainSim::advance(float intensity, WiperMode wipers, float car_speed_mps, co
         if (b.turning() != 0.0f) sweep(b);
     if (!particles_.empty()) {
         push_particles(true);
-        for (int k = 0; k < p_.collision_iterations; ++k) collide_particles();
+        for (int k = 0; k < p_.collision_iterations; ++k) collider_.collide(particles_, particle_r_m_, p_.restitution);
         push_particles(false);  // the blade has the last word: nothing is left inside it
         particles_to_grid();
     }
@@ -378,62 +378,6 @@ void RainSim::push_particles(bool carry) {
     }
 }
 
-void RainSim::collide_particles() {
-    // Buckets one particle diameter wide over the particles' bounding box: a particle
-    // only meets others in its own and the eight neighbouring buckets.
-    const float bucket = 2.0f * particle_r_m_;
-    glm::vec2 lo = particles_.front().pos_m, hi = lo;
-    for (const WaterParticle& q : particles_) {
-        lo = glm::min(lo, q.pos_m);
-        hi = glm::max(hi, q.pos_m);
-    }
-    const int bc = int((hi.x - lo.x) / bucket) + 1, br = int((hi.y - lo.y) / bucket) + 1;
-    auto key = [&](glm::vec2 p) {
-        int i = std::min(int((p.x - lo.x) / bucket), bc - 1), j = std::min(int((p.y - lo.y) / bucket), br - 1);
-        return j * bc + i;
-    };
-    bucket_start_.assign(size_t(bc) * size_t(br) + 1, 0);
-    for (const WaterParticle& q : particles_) ++bucket_start_[size_t(key(q.pos_m)) + 1];
-    for (size_t k = 1; k < bucket_start_.size(); ++k) bucket_start_[k] += bucket_start_[k - 1];
-    bucket_items_.assign(particles_.size(), 0);
-    bucket_fill_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
-    for (size_t i = 0; i < particles_.size(); ++i)
-        bucket_items_[size_t(bucket_fill_[size_t(key(particles_[i].pos_m))]++)] = int32_t(i);
-    // Jacobi: every push from this tick's positions, then all applied. Each pair once:
-    // a bucket with itself and with its four neighbours ahead (right, and the row above).
-    push_.assign(particles_.size(), glm::vec2(0.0f));
-    const float two_r = 2.0f * particle_r_m_, two_r2 = two_r * two_r;
-    auto meet = [&](size_t i, size_t j) {
-        const glm::vec2 d = particles_[i].pos_m - particles_[j].pos_m;
-        const float d2 = dot(d, d);
-        if (d2 >= two_r2) return;
-        const float dist = std::sqrt(d2);
-        // Coincident centres part along a direction fixed by their order.
-        const glm::vec2 dir = dist > 1e-7f ? d / dist : glm::vec2(i < j ? 1.0f : -1.0f, 0.0f);
-        const glm::vec2 push = dir * (0.5f * (two_r - dist) * (1.0f + p_.restitution));
-        push_[i] += push;
-        push_[j] -= push;
-    };
-    constexpr int kAheadI[4] = {1, -1, 0, 1}, kAheadJ[4] = {0, 1, 1, 1};
-    for (int kj = 0; kj < br; ++kj)
-        for (int ki = 0; ki < bc; ++ki) {
-            const int k = kj * bc + ki;
-            const int32_t b0 = bucket_start_[size_t(k)], b1 = bucket_start_[size_t(k) + 1];
-            for (int32_t a = b0; a < b1; ++a) {
-                const size_t i = size_t(bucket_items_[size_t(a)]);
-                for (int32_t b = a + 1; b < b1; ++b) meet(i, size_t(bucket_items_[size_t(b)]));
-                for (int n = 0; n < 4; ++n) {
-                    const int ni = ki + kAheadI[n], nj = kj + kAheadJ[n];
-                    if (ni < 0 || ni >= bc || nj >= br) continue;
-                    const int nk = nj * bc + ni;
-                    for (int32_t b = bucket_start_[size_t(nk)]; b < bucket_start_[size_t(nk) + 1]; ++b)
-                        meet(i, size_t(bucket_items_[size_t(b)]));
-                }
-            }
-        }
-    for (size_t i = 0; i < particles_.size(); ++i) particles_[i].pos_m += push_[i];
-}
-
 bool RainSim::near_blade(glm::vec2 pos_m, float reach_m) const {
     for (const WiperBlade& b : blades_) {
         const WiperBladeParams& bp = b.params();
@@ -447,6 +391,11 @@ bool RainSim::near_blade(glm::vec2 pos_m, float reach_m) const {
 
 void RainSim::particles_to_grid() {
     const int reach = p_.defer_search_cells;
+    // Which cells hold a drop heavy enough to defer a conversion near it, kept up to
+    // date as particles join drops: the search reads bytes, not drops.
+    heavy_.resize(cell_drop_.size());
+    for (size_t c = 0; c < cell_drop_.size(); ++c)
+        heavy_[c] = cell_drop_[c] >= 0 && drops_[size_t(cell_drop_[c])].mass_mg > p_.defer_mass_mg;
     for (WaterParticle& q : particles_) {
         if (!glass_.contains(q.pos_m)) {  // pushed off the edge of the glass
             ledger_.drained_mg += q.mass_mg;
@@ -456,18 +405,15 @@ void RainSim::particles_to_grid() {
         if (near_blade(q.pos_m, p_.band_m)) continue;
         // Deferred while a big drop sits in the square around the target cell, so that a
         // reversal does not pour the whole bead into one giant drop.
-        const glm::ivec2 c = glass_.cell_xy(glass_.cell_of(q.pos_m));
+        const int cell = glass_.cell_of(q.pos_m);
+        const glm::ivec2 c = glass_.cell_xy(cell);
         bool defer = false;
         for (int j = std::max(c.y - reach, 0); j <= std::min(c.y + reach, glass_.rows() - 1) && !defer; ++j)
-            for (int i = std::max(c.x - reach, 0); i <= std::min(c.x + reach, glass_.cols() - 1); ++i) {
-                const int32_t at = cell_drop_[size_t(j * glass_.cols() + i)];
-                if (at >= 0 && drops_[size_t(at)].mass_mg > p_.defer_mass_mg) {
-                    defer = true;
-                    break;
-                }
-            }
+            for (int i = std::max(c.x - reach, 0); i <= std::min(c.x + reach, glass_.cols() - 1); ++i)
+                defer |= heavy_[size_t(j * glass_.cols() + i)] != 0;
         if (defer) continue;
-        new_drop(q.pos_m, q.mass_mg, 0);
+        const int32_t at = new_drop(q.pos_m, q.mass_mg, 0);
+        heavy_[size_t(cell)] = drops_[size_t(at)].mass_mg > p_.defer_mass_mg;
         q.dead = 1;
     }
 }

@@ -15,7 +15,9 @@
 
 #include "sim/core/Rng.h"
 #include "sim/rain/GlassSurface.h"
+#include "sim/rain/ParticleCollider.h"
 #include "sim/rain/RainParams.h"
+#include "sim/rain/WaterParticle.h"
 #include "sim/rain/WiperBlade.h"
 #include "sim/rain/WiperMotor.h"
 #include "sim/world/Subsystem.h"
@@ -35,13 +37,6 @@ struct RainDrop {
     bool dead() const { return flags & kDead; }
 };
 static_assert(sizeof(RainDrop) == 36, "RainDrop is hashed as raw words");
-
-struct WaterParticle {
-    glm::vec2 pos_m{0.0f};
-    float mass_mg = 0.0f;
-    uint32_t dead = 0;
-};
-static_assert(sizeof(WaterParticle) == 16, "WaterParticle is hashed as raw words");
 
 // Where the water went: what is on the glass is added - evaporated - drained, to
 // rounding. Only trailing drops evaporate; drained water ran or was pushed off an edge.
@@ -92,7 +87,6 @@ private:
     bool step_cell(size_t i);  // false when the drop left the glass
     void sweep(const WiperBlade& blade);
     void push_particles(bool carry);
-    void collide_particles();
     void particles_to_grid();
     void compact();
     float affinity(int cell) const;
@@ -109,15 +103,13 @@ private:
     std::vector<WaterParticle> particles_;
     std::vector<int32_t> cell_drop_;     // drop index per cell, -1 for none
     std::vector<uint32_t> wet_tick_;     // tick + 1 a drop last ran into the cell, 0 never
+    std::vector<uint8_t> heavy_;         // particles_to_grid: the cell's drop defers conversions
     RainLedger ledger_;
     uint64_t tick_ = 0;
     float particle_r_m_;
     float hold_ref_;                     // what holds a slide-mass drop, m/s^2
     float slide_r_m_;
-
-    // Scratch for the particle collisions (bucketed by cell).
-    std::vector<int32_t> bucket_start_, bucket_items_, bucket_fill_;
-    std::vector<glm::vec2> push_;
+    ParticleCollider collider_;          // scratch for the particle collisions
 };
 
 }  // namespace sim

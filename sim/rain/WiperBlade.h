@@ -20,26 +20,36 @@ struct WiperBladeParams {
 class WiperBlade {
 public:
     explicit WiperBlade(WiperBladeParams params)
-        : p_(params), angle_rad_(params.rest_rad), previous_rad_(params.rest_rad) {}
+        : p_(params),
+          angle_rad_(params.rest_rad),
+          previous_rad_(params.rest_rad),
+          direction_(unit(params.rest_rad)),
+          previous_direction_(direction_) {}
 
     // Moves the blade to rest + fraction * sweep; the previous angle is kept for the
     // sweep test of this tick.
     void set_fraction(float fraction) {
         previous_rad_ = angle_rad_;
+        previous_direction_ = direction_;
         angle_rad_ = p_.rest_rad + fraction * p_.sweep_rad;
+        direction_ = unit(angle_rad_);
     }
 
     const WiperBladeParams& params() const { return p_; }
     float angle_rad() const { return angle_rad_; }
     float previous_rad() const { return previous_rad_; }
-    glm::vec2 direction() const { return {std::cos(angle_rad_), std::sin(angle_rad_)}; }
-    glm::vec2 previous_direction() const { return {std::cos(previous_rad_), std::sin(previous_rad_)}; }
+    // Kept with the angles: the particle model asks for them per particle.
+    glm::vec2 direction() const { return direction_; }
+    glm::vec2 previous_direction() const { return previous_direction_; }
     // +1 turning counter-clockwise this tick, -1 clockwise, 0 still.
     float turning() const { return angle_rad_ > previous_rad_ ? 1.0f : angle_rad_ < previous_rad_ ? -1.0f : 0.0f; }
 
 private:
+    static glm::vec2 unit(float rad) { return {std::cos(rad), std::sin(rad)}; }
+
     WiperBladeParams p_;
     float angle_rad_, previous_rad_;
+    glm::vec2 direction_, previous_direction_;
 };
 
 }  // namespace sim
