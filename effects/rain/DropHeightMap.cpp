@@ -2,8 +2,6 @@
 
 #include <vector>
 
-#include "effects/gl/EmptyVertexArray.h"
-
 namespace effects {
 
 namespace {
@@ -14,8 +12,8 @@ DropHeightMap::DropHeightMap(int width, int height)
     : width_(width),
       height_(height),
       splat_(gl::Program::from_files("rain.splat", {"rain/splat.vert.glsl", "rain/splat.frag.glsl"})),
-      shape_(gl::Program::from_files("rain.shape", {"common/fullscreen.vert.glsl", "rain/shape.frag.glsl"})),
-      normals_(gl::Program::from_files("rain.normals", {"common/fullscreen.vert.glsl", "rain/normals.frag.glsl"})),
+      shape_(gl::Program::from_files("rain.shape", {"rain/tiles.vert.glsl", "rain/shape.frag.glsl"})),
+      normals_(gl::Program::from_files("rain.normals", {"rain/tiles.vert.glsl", "rain/normals.frag.glsl"})),
       vao_(gl::VertexArray::create("rain.splat")) {
     // N(h) = 1 / (1 + (h/R)^4) over h/R in [0, kMetaballReach], scaled per drop.
     std::vector<float> profile(kProfileTexels);
@@ -50,14 +48,9 @@ DropHeightMap::DropHeightMap(int width, int height)
 
 void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 glass_size_m, float radius_scale,
                            const HeightCompression& c) {
-    const size_t bytes = metaballs.size_bytes();
-    if (bytes > 0 && (instances_.id() == 0 || size_t(instances_.size()) < bytes)) {
-        size_t capacity = instances_.id() == 0 ? 4096 * sizeof(RainMetaball) : size_t(instances_.size());
-        while (capacity < bytes) capacity *= 2;
-        instances_ = gl::Buffer::create("rain.metaballs", GLsizeiptr(capacity));
+    if (gl::upload_growing(instances_, "rain.metaballs", std::as_bytes(metaballs)))
         vao_.vertex_buffer(0, instances_, 0, sizeof(RainMetaball));
-    }
-    if (bytes > 0) instances_.update<RainMetaball>(0, metaballs);
+    wet_.set(drops_by_tile(metaballs, glass_size_m, width_, height_, radius_scale, c.threshold), width_, height_);
 
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -83,7 +76,7 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         glDisable(GL_BLEND);
     }
 
-    // 2. Threshold and height (compressed if asked) per texel.
+    // 2. Threshold and height (compressed if asked) per texel where water can be.
     glBindFramebuffer(GL_FRAMEBUFFER, heights_fbo_.id());
     shape_.use();
     shape_.set("u_sums", 0);
@@ -93,16 +86,15 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     shape_.set("u_steps", c.steps);
     shape_.set("u_k", c.k);
     sums_.bind(0);
-    gl::bind_empty_vertex_array();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    wet_.draw(shape_);
 
-    // 3. Normals.
+    // 3. Normals, there too: a dry neighbour's height is the cleared 0.
     glBindFramebuffer(GL_FRAMEBUFFER, surface_fbo_.id());
     normals_.use();
     normals_.set("u_heights", 0);
     normals_.set("u_texel_mm", glm::vec2(glass_size_m.x * 1000.0f / float(width_), glass_size_m.y * 1000.0f / float(height_)));
     heights_.bind(0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    wet_.draw(normals_);
     glDepthMask(GL_TRUE);
 }
 
