@@ -30,8 +30,8 @@ struct SurfaceSample {
 //
 // `wet` holds the tiles where water can be, as runs along rows (first tile, count):
 // where the sum over the tile's drops of each one's density at its nearest texel
-// passes half of the threshold. No texel elsewhere can reach the threshold, so the
-// height maps shade only these tiles.
+// passes half of `threshold` (T). No texel elsewhere can reach T, so the height maps
+// shade only these tiles (WetTiles).
 struct DropTiles {
     static constexpr int kTexels = 16;
     int cols = 0, rows = 0;

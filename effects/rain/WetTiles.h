@@ -11,7 +11,7 @@ namespace effects {
 
 class WetTiles {
 public:
-    // Uploads the runs of `tiles` (over a width x height target) and binds them.
+    // Uploads the runs of `tiles`, over a width x height target.
     void set(const DropTiles& tiles, int width, int height);
     // Clears the bound framebuffer's colour 0 and draws `program` over the wet tiles.
     void draw(const gl::Program& program) const;
