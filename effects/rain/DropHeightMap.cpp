@@ -14,6 +14,7 @@ DropHeightMap::DropHeightMap(int width, int height)
       splat_(gl::Program::from_files("rain.splat", {"rain/splat.vert.glsl", "rain/splat.frag.glsl"})),
       shape_(gl::Program::from_files("rain.shape", {"rain/tiles.vert.glsl", "rain/shape.frag.glsl"})),
       normals_(gl::Program::from_files("rain.normals", {"rain/tiles.vert.glsl", "rain/normals.frag.glsl"})),
+      mark_(gl::Program::from_files("rain.mark", {"rain/tiles.vert.glsl", "rain/mark.frag.glsl"})),
       vao_(gl::VertexArray::create("rain.splat")) {
     // N(h) = 1 / (1 + (h/R)^4) over h/R in [0, kMetaballReach], scaled per drop.
     std::vector<float> profile(kProfileTexels);
@@ -35,6 +36,8 @@ DropHeightMap::DropHeightMap(int width, int height)
     }
     sums_fbo_ = gl::Framebuffer::create("rain.sums");
     sums_fbo_.attach_colour(0, sums_);
+    wet_depth_ = gl::Texture::create_2d("rain.wet_depth", GL_DEPTH_COMPONENT16, width, height);
+    sums_fbo_.attach_depth(wet_depth_);
     sums_fbo_.check_complete();
     heights_fbo_ = gl::Framebuffer::create("rain.heights");
     heights_fbo_.attach_colour(0, heights_);
@@ -57,11 +60,22 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     glDepthMask(GL_FALSE);
     glViewport(0, 0, width_, height_);
 
-    // 1. Splat: additive sums.
+    // 1. Splat: additive sums, where water can be only: the wet tiles are marked in the
+    // depth buffer and the splats fail the depth test elsewhere (no pass reads there).
     glBindFramebuffer(GL_FRAMEBUFFER, sums_fbo_.id());
-    const float zero[4] = {0, 0, 0, 0};
+    const float zero[4] = {0, 0, 0, 0}, unmarked = 0.0f;
     glClearBufferfv(GL_COLOR, 0, zero);
     if (!metaballs.empty()) {
+        glClearBufferfv(GL_DEPTH, 0, &unmarked);
+        glEnable(GL_DEPTH_TEST);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_ALWAYS);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        mark_.use();
+        wet_.cover(mark_);  // at depth 0.5, as the splats
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
@@ -74,6 +88,8 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         vao_.bind();
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(metaballs.size()));
         glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
     }
 
     // 2. Threshold and height (compressed if asked) per texel where water can be.

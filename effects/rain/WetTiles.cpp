@@ -21,6 +21,10 @@ void WetTiles::set(const DropTiles& tiles, int width, int height) {
 void WetTiles::draw(const gl::Program& program) const {
     const float zero[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, zero);
+    cover(program);
+}
+
+void WetTiles::cover(const gl::Program& program) const {
     if (runs_count_ == 0) return;
     program.set("u_tile_texels", DropTiles::kTexels);
     program.set("u_tile_cols", cols_);

@@ -15,6 +15,8 @@ public:
     void set(const DropTiles& tiles, int width, int height);
     // Clears the bound framebuffer's colour 0 and draws `program` over the wet tiles.
     void draw(const gl::Program& program) const;
+    // Draws `program` over the wet tiles, clearing nothing.
+    void cover(const gl::Program& program) const;
 
 private:
     gl::Buffer runs_;
