@@ -174,6 +174,28 @@ TEST(DropTiles, ListEveryDropThatReachesATexelOfTheTile) {
         }
     // Culled: 278 listings measured, against 28 drops x 128 tiles.
     EXPECT_LT(listed, 400u);
+
+    // The wet runs lie along rows, in order, and hold every texel the reference wets
+    // (the height maps shade nothing else), and fewer than half the tiles.
+    std::vector<bool> wet_tile(tiles.ranges.size(), false);
+    uint32_t next = 0;
+    for (const glm::uvec2 run : tiles.wet) {
+        ASSERT_GT(run.y, 0u);
+        EXPECT_GE(run.x, next);
+        EXPECT_LE(run.x % uint32_t(tiles.cols) + run.y, uint32_t(tiles.cols)) << "a run stays in its row";
+        for (uint32_t k = run.x; k < run.x + run.y; ++k) wet_tile[k] = true;
+        next = run.x + run.y;
+    }
+    const std::vector<effects::SurfaceSample> slow = effects::reference_surface(scene, size, w, h);
+    size_t wet_texels = 0;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            if (slow[size_t(j) * w + size_t(i)].height_mm > 0.0f) {
+                ++wet_texels;
+                EXPECT_TRUE(wet_tile[size_t(j / 16 * tiles.cols + i / 16)]) << "texel " << i << "," << j;
+            }
+    EXPECT_GT(wet_texels, 1500u);
+    EXPECT_LT(std::count(wet_tile.begin(), wet_tile.end(), true), 64);
 }
 
 TEST_F(RainRenderTest, TheGpuReferenceMatchesTheCpuReference) {

@@ -1,5 +1,6 @@
 #include "effects/gl/Buffer.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace effects::gl {
@@ -32,6 +33,14 @@ void Buffer::update(GLintptr offset_bytes, std::span<const std::byte> bytes) {
                                 " exceeds its size " + std::to_string(size_bytes_));
     if (count == 0) return;
     glNamedBufferSubData(id(), offset_bytes, count, bytes.data());
+}
+
+bool upload_growing(Buffer& buffer, std::string_view label, std::span<const std::byte> bytes) {
+    const GLsizeiptr size = std::max<GLsizeiptr>(GLsizeiptr(bytes.size()), 16);
+    const bool grow = buffer.id() == 0 || buffer.size() < size;
+    if (grow) buffer = Buffer::create(label, std::max(size, 2 * buffer.size()));
+    if (!bytes.empty()) buffer.update(0, bytes);
+    return grow;
 }
 
 }  // namespace effects::gl

@@ -46,4 +46,9 @@ private:
     std::string label_;
 };
 
+// Writes bytes at the start of `buffer`, first recreating it (at least doubled, and of
+// 16 bytes or more so an empty list still binds) when it is too small. Returns whether
+// it was recreated: whatever referred to the old buffer must be pointed at the new one.
+bool upload_growing(Buffer& buffer, std::string_view label, std::span<const std::byte> bytes);
+
 }  // namespace effects::gl

@@ -2,8 +2,6 @@
 
 #include <vector>
 
-#include "effects/gl/EmptyVertexArray.h"
-
 namespace effects {
 
 namespace {
@@ -14,8 +12,9 @@ DropHeightMap::DropHeightMap(int width, int height)
     : width_(width),
       height_(height),
       splat_(gl::Program::from_files("rain.splat", {"rain/splat.vert.glsl", "rain/splat.frag.glsl"})),
-      shape_(gl::Program::from_files("rain.shape", {"common/fullscreen.vert.glsl", "rain/shape.frag.glsl"})),
-      normals_(gl::Program::from_files("rain.normals", {"common/fullscreen.vert.glsl", "rain/normals.frag.glsl"})),
+      shape_(gl::Program::from_files("rain.shape", {"rain/tiles.vert.glsl", "rain/shape.frag.glsl"})),
+      normals_(gl::Program::from_files("rain.normals", {"rain/tiles.vert.glsl", "rain/normals.frag.glsl"})),
+      mark_(gl::Program::from_files("rain.mark", {"rain/tiles.vert.glsl", "rain/mark.frag.glsl"})),
       vao_(gl::VertexArray::create("rain.splat")) {
     // N(h) = 1 / (1 + (h/R)^4) over h/R in [0, kMetaballReach], scaled per drop.
     std::vector<float> profile(kProfileTexels);
@@ -37,6 +36,8 @@ DropHeightMap::DropHeightMap(int width, int height)
     }
     sums_fbo_ = gl::Framebuffer::create("rain.sums");
     sums_fbo_.attach_colour(0, sums_);
+    wet_depth_ = gl::Texture::create_2d("rain.wet_depth", GL_DEPTH_COMPONENT16, width, height);
+    sums_fbo_.attach_depth(wet_depth_);
     sums_fbo_.check_complete();
     heights_fbo_ = gl::Framebuffer::create("rain.heights");
     heights_fbo_.attach_colour(0, heights_);
@@ -50,25 +51,31 @@ DropHeightMap::DropHeightMap(int width, int height)
 
 void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 glass_size_m, float radius_scale,
                            const HeightCompression& c) {
-    const size_t bytes = metaballs.size_bytes();
-    if (bytes > 0 && (instances_.id() == 0 || size_t(instances_.size()) < bytes)) {
-        size_t capacity = instances_.id() == 0 ? 4096 * sizeof(RainMetaball) : size_t(instances_.size());
-        while (capacity < bytes) capacity *= 2;
-        instances_ = gl::Buffer::create("rain.metaballs", GLsizeiptr(capacity));
+    if (gl::upload_growing(instances_, "rain.metaballs", std::as_bytes(metaballs)))
         vao_.vertex_buffer(0, instances_, 0, sizeof(RainMetaball));
-    }
-    if (bytes > 0) instances_.update<RainMetaball>(0, metaballs);
+    wet_.set(drops_by_tile(metaballs, glass_size_m, width_, height_, radius_scale, c.threshold), width_, height_);
 
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_FALSE);
     glViewport(0, 0, width_, height_);
 
-    // 1. Splat: additive sums.
+    // 1. Splat: additive sums, where water can be only: the wet tiles are marked in the
+    // depth buffer and the splats fail the depth test elsewhere (no pass reads there).
     glBindFramebuffer(GL_FRAMEBUFFER, sums_fbo_.id());
-    const float zero[4] = {0, 0, 0, 0};
+    const float zero[4] = {0, 0, 0, 0}, unmarked = 0.0f;
     glClearBufferfv(GL_COLOR, 0, zero);
     if (!metaballs.empty()) {
+        glClearBufferfv(GL_DEPTH, 0, &unmarked);
+        glEnable(GL_DEPTH_TEST);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_ALWAYS);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        mark_.use();
+        wet_.cover(mark_);  // at depth 0.5, as the splats
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_FALSE);
+        glDepthFunc(GL_LEQUAL);
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE);
@@ -81,9 +88,11 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         vao_.bind();
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(metaballs.size()));
         glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
     }
 
-    // 2. Threshold and height (compressed if asked) per texel.
+    // 2. Threshold and height (compressed if asked) per texel where water can be.
     glBindFramebuffer(GL_FRAMEBUFFER, heights_fbo_.id());
     shape_.use();
     shape_.set("u_sums", 0);
@@ -93,16 +102,15 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     shape_.set("u_steps", c.steps);
     shape_.set("u_k", c.k);
     sums_.bind(0);
-    gl::bind_empty_vertex_array();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    wet_.draw(shape_);
 
-    // 3. Normals.
+    // 3. Normals, there too: a dry neighbour's height is the cleared 0.
     glBindFramebuffer(GL_FRAMEBUFFER, surface_fbo_.id());
     normals_.use();
     normals_.set("u_heights", 0);
     normals_.set("u_texel_mm", glm::vec2(glass_size_m.x * 1000.0f / float(width_), glass_size_m.y * 1000.0f / float(height_)));
     heights_.bind(0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    wet_.draw(normals_);
     glDepthMask(GL_TRUE);
 }
 

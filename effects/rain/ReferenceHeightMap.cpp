@@ -1,27 +1,14 @@
 #include "effects/rain/ReferenceHeightMap.h"
 
-#include <algorithm>
-
-#include "effects/gl/EmptyVertexArray.h"
 #include "effects/rain/MetaballReference.h"
 
 namespace effects {
 
-namespace {
-
-void upload(gl::Buffer& buffer, std::string_view label, std::span<const std::byte> bytes) {
-    const GLsizeiptr size = std::max<GLsizeiptr>(GLsizeiptr(bytes.size()), 16);
-    if (buffer.id() == 0 || buffer.size() < size) buffer = gl::Buffer::create(label, std::max(size, 2 * buffer.size()));
-    if (!bytes.empty()) buffer.update(0, bytes);
-}
-
-}  // namespace
-
 ReferenceHeightMap::ReferenceHeightMap(int width, int height)
     : width_(width),
       height_(height),
-      iso_(gl::Program::from_files("rain.reference", {"common/fullscreen.vert.glsl", "rain/reference.frag.glsl"})),
-      normals_(gl::Program::from_files("rain.normals", {"common/fullscreen.vert.glsl", "rain/normals.frag.glsl"})) {
+      iso_(gl::Program::from_files("rain.reference", {"rain/tiles.vert.glsl", "rain/reference.frag.glsl"})),
+      normals_(gl::Program::from_files("rain.normals", {"rain/tiles.vert.glsl", "rain/normals.frag.glsl"})) {
     heights_ = gl::Texture::create_2d("rain.reference.heights", GL_R32F, width, height);
     surface_ = gl::Texture::create_2d("rain.reference.surface", GL_RGBA16F, width, height);
     for (gl::Texture* t : {&heights_, &surface_}) {
@@ -37,10 +24,11 @@ ReferenceHeightMap::ReferenceHeightMap(int width, int height)
 }
 
 void ReferenceHeightMap::update(std::span<const RainMetaball> drops, glm::vec2 glass_size_m, float threshold) {
-    const DropTiles tiles = drops_by_tile(drops, glass_size_m, width_, height_);
-    upload(drops_, "rain.reference.drops", std::as_bytes(drops));
-    upload(tiles_, "rain.reference.tiles", std::as_bytes(std::span(tiles.ranges)));
-    upload(tile_drops_, "rain.reference.tile_drops", std::as_bytes(std::span(tiles.indices)));
+    const DropTiles tiles = drops_by_tile(drops, glass_size_m, width_, height_, 1.0f, threshold);
+    gl::upload_growing(drops_, "rain.reference.drops", std::as_bytes(drops));
+    gl::upload_growing(tiles_, "rain.reference.tiles", std::as_bytes(std::span(tiles.ranges)));
+    gl::upload_growing(tile_drops_, "rain.reference.tile_drops", std::as_bytes(std::span(tiles.indices)));
+    wet_.set(tiles, width_, height_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, drops_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tiles_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, tile_drops_.id());
@@ -50,9 +38,8 @@ void ReferenceHeightMap::update(std::span<const RainMetaball> drops, glm::vec2 g
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_FALSE);
     glViewport(0, 0, width_, height_);
-    gl::bind_empty_vertex_array();
 
-    // 1. Iso-surface height per texel; every texel is written, so no clear.
+    // 1. Iso-surface height per texel where water can be, as the 2D path does.
     const glm::vec2 texel_m = glass_size_m / glm::vec2(float(width_), float(height_));
     glBindFramebuffer(GL_FRAMEBUFFER, heights_fbo_.id());
     iso_.use();
@@ -63,7 +50,7 @@ void ReferenceHeightMap::update(std::span<const RainMetaball> drops, glm::vec2 g
     iso_.set("u_reach", kMetaballReach);
     iso_.set("u_ceiling_m", bisection_ceiling_m(drops));
     iso_.set("u_bisections", kReferenceBisections);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    wet_.draw(iso_);
 
     // 2. Normals.
     glBindFramebuffer(GL_FRAMEBUFFER, surface_fbo_.id());
@@ -71,7 +58,7 @@ void ReferenceHeightMap::update(std::span<const RainMetaball> drops, glm::vec2 g
     normals_.set("u_heights", 0);
     normals_.set("u_texel_mm", texel_m * 1000.0f);
     heights_.bind(0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    wet_.draw(normals_);
     glDepthMask(GL_TRUE);
 }
 

@@ -3,7 +3,8 @@
 // be timed against it in the same execution environment: per texel, the iso-surface
 // height N = T of the same drops, kernel and cut-off, by the same bisection over the
 // same per-tile drop lists (built on the CPU, drops_by_tile), then normals from the
-// right and upper neighbours. The CPU reference stays the oracle it is checked against.
+// right and upper neighbours; both over the tiles where water can be only, like the
+// 2D path (WetTiles). The CPU reference stays the oracle it is checked against.
 #include <span>
 
 #include <glm/vec2.hpp>
@@ -13,6 +14,7 @@
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 #include "effects/rain/RainView.h"
+#include "effects/rain/WetTiles.h"
 
 namespace effects {
 
@@ -34,6 +36,7 @@ private:
     gl::Framebuffer heights_fbo_, surface_fbo_;
     gl::Program iso_, normals_;
     gl::Buffer drops_, tiles_, tile_drops_;
+    WetTiles wet_;
 };
 
 }  // namespace effects

@@ -147,8 +147,10 @@ void time_gpu(GpuTimes& t, Draw&& draw) {
 // tests/rain_render_test.cpp (4 x 4 tiles): per-frame costs such as the draw calls and
 // glFinish weigh no more than at the game's resolution. The 2D path and the 3D
 // reference on the GPU are timed the same way, alternately so the machine's load falls
-// on both alike: a warm-up each, then the median of `runs`. The CPU reference (this
-// thread's CPU time) is the exactness oracle the GPU one is checked against.
+// on both alike: a warm-up each, then the median of `runs`. Both shade per texel only
+// the tiles where water can be (WetTiles; their CPU binning is in the time), the 2D
+// path after splatting every drop. The CPU reference (this thread's CPU time) is the
+// exactness oracle the GPU one is checked against.
 void bench_reference(BenchReport& report, int runs) {
     glm::vec2 tile;
     const std::vector<effects::RainMetaball> one = effects::merged_drop_scene(tile);
@@ -184,10 +186,12 @@ void bench_reference(BenchReport& report, int runs) {
     const std::string res = std::to_string(w) + "x" + std::to_string(h), of = "median of " + std::to_string(runs);
     const std::string cpu_note = "; process CPU ";
     report.add({"rain", "2D metaball path @" + res + " (GPU, wall)", fast_med * 1e3, "ms", std::nullopt, false,
-                std::to_string(scene.size()) + " merged drops (" + std::to_string(kTiles * kTiles) + " tiles); " + of +
+                std::to_string(scene.size()) + " merged drops (" + std::to_string(kTiles * kTiles) +
+                    " tiles); splat, then height and normals over the wet tiles; " + of +
                     cpu_note + fmt("%.1f", median(fast_t.cpu_s) * 1e3) + " ms"});
     report.add({"rain", "3D metaball reference @" + res + " (GPU, wall)", gpu_ref_med * 1e3, "ms", std::nullopt, false,
-                "iso-surface by bisection over the drops culled per 16x16 texels, then normals; " + of + cpu_note +
+                "iso-surface by bisection over the drops culled per 16x16 texels, then normals, both over the wet "
+                "tiles; " + of + cpu_note +
                     fmt("%.1f", median(gpu_ref_t.cpu_s) * 1e3) + " ms; " + fmt("%.3f", refs_angle) +
                     " deg from the CPU reference"});
     report.add({"rain", "3D metaball reference @" + res + " (CPU time)", cpu_ref_med * 1e3, "ms", std::nullopt, false,

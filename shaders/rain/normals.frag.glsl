@@ -2,8 +2,9 @@
 // Normals of a height map (seed 5.4), from the right and upper neighbours; shared by
 // the 2D path (shape.frag.glsl's heights) and the 3D reference (reference.frag.glsl's).
 // One gather at the texel's upper-right corner brings the texel and both neighbours
-// (clamped at the edges): under llvmpipe each fetch of a full-screen pass costs about
-// as much as the rest of the pass, and a gather costs one.
+// (clamped at the edges): under llvmpipe each fetch of a per-texel pass costs about
+// as much as the rest of the pass, and a gather costs one. Drawn over the wet tiles
+// (tiles.vert.glsl); a neighbour outside them is the cleared 0 of dry glass.
 uniform sampler2D u_heights;  // mm, 0: dry
 uniform vec2 u_texel_mm;
 layout(location = 0) out vec4 o_surface;  // normal u, v; height mm; water
