@@ -98,10 +98,16 @@ public:
           scene_{session_.level.scene, effects::SceneGeometry(session_.level.scene, session_.world->terrain()),
                  effects::SceneLighting(options.environment_size, options.shadow_map_size), effects::SceneTargets{}},
           output_(width_, height_) {
+        // The level's sun, as the game's renderer sets it; its radiance and the sky's stay
+        // at their clear-day defaults (the renderer dims them in rain).
         scene_.lighting.sky.sun_dir = glm::normalize(session_.world->level().sun_direction);
         scene_.targets.resize(width_, height_);
-        for (auto& p : effects::make_pass_list())
-            if (const StagePass kind = stage_pass_of(*p); options.passes & kind) passes_.push_back({kind, std::move(p)});
+        // The game's list is the one place that knows the order: the passes not held are
+        // made and dropped here.
+        for (auto& p : effects::make_pass_list()) {
+            const StagePass kind = stage_pass_of(*p);
+            if (options.passes & kind) passes_.push_back({kind, std::move(p)});
+        }
     }
     RenderStage(const RenderStage&) = delete;  // scene_ refers into session_
     RenderStage& operator=(const RenderStage&) = delete;
@@ -144,10 +150,7 @@ public:
         throw std::logic_error("the stage does not hold that pass");
     }
     sim::World& world() { return *session_.world; }
-    game::GameSession& session() { return session_; }
     effects::SceneResources& scene() { return scene_; }
-    int width() const { return width_; }
-    int height() const { return height_; }
 
 private:
     int width_, height_;

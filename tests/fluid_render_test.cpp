@@ -77,7 +77,8 @@ protected:
     static void TearDownTestSuite() { context_.reset(); }
     void SetUp() override {
         context_->make_current();
-        stage_ = std::make_unique<RenderStage>(tank_level(), StageOptions{.width = kWidth, .height = kHeight, .passes = kTankFrame});
+        stage_ = std::make_unique<RenderStage>(
+            tank_level(), StageOptions{.width = kWidth, .height = kHeight, .passes = kTankFrame});
         for (int t = 0; t < 45; ++t) stage_->world().step({});  // settled
     }
     void TearDown() override { stage_.reset(); }
@@ -167,11 +168,12 @@ TEST_F(FluidRenderTest, TheLiquidBendsTheBackgroundBeyondTheGlassTint) {
 }
 
 TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
-    stage_->world().get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.2f, 30.0f}, {0, 0, 1}, {0, 0, 0});
+    sim::World& world = stage_->world();
+    world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.2f, 30.0f}, {0, 0, 1}, {0, 0, 0});
     // Until the drops are up (at most a second).
-    for (int t = 0; t < 60 && stage_->world().get<sim::FluidTank>().fluid().splash_count() < 25; ++t) stage_->world().step({});
+    for (int t = 0; t < 60 && world.get<sim::FluidTank>().fluid().splash_count() < 25; ++t) world.step({});
     effects::FluidView view;
-    ASSERT_TRUE(effects::gather_fluid_view(stage_->world(), view));
+    ASSERT_TRUE(effects::gather_fluid_view(world, view));
     ASSERT_GE(view.splash.size(), 25u);
     const game::ImageRGBA8 splash = render(true);
     maybe_write_png("tank_splash", splash);
