@@ -17,72 +17,33 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "effects/dust/DustPass.h"
-#include "effects/gl/Framebuffer.h"
-#include "effects/gl/Texture.h"
-#include "effects/scene/EnvironmentPass.h"
-#include "effects/scene/OpaquePass.h"
-#include "effects/scene/ShadowPass.h"
-#include "effects/scene/SkyOcclusionPass.h"
-#include "effects/scene/TonemapPass.h"
+#include "RenderStage.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
-#include "game/capture/Readback.h"
 #include "game/platform/HeadlessContext.h"
-#include "game/session/GameSession.h"
 #include "sim/dust/DustField.h"
 
 namespace {
 
 constexpr int kWidth = 320, kHeight = 200;
 
-// The harbour with its passes up to the dust, and a camera of the test's choosing.
-struct DustStage {
-    explicit DustStage(const std::string& level = "harbour", int w = kWidth, int h = kHeight)
-        : width(w), height(h), session(game::GameSession::open(level, 1)),
-          scene{session.level.scene, effects::SceneGeometry(session.level.scene, session.world->terrain()),
-                effects::SceneLighting(32, 1024), effects::SceneTargets{}} {
-        scene.lighting.sky.sun_dir = glm::normalize(session.world->level().sun_direction);
-        scene.targets.resize(width, height);
-        ldr = effects::gl::Texture::create_2d("test.ldr", GL_RGBA8, width, height);
-        output = effects::gl::Framebuffer::create("test.output");
-        output.attach_colour(0, ldr);
-        output.check_complete();
-    }
+// The harbour's lit scene, its dust shells and the tonemap, from a camera of the test's choosing.
+constexpr StagePasses kDustFrame = kLitScene | kDustPass | kTonemapPass;
+const StageFrame kWithoutDust{.skip = kDustPass};
 
-    game::ImageRGBA8 render(const sim::CameraView& view, bool with_dust) {
-        effects::Camera camera = effects::make_camera(view, float(width) / float(height));
-        effects::FrameContext frame{*session.world, camera, scene, {output.id(), width, height}, 0.0};
-        environment.render(frame);
-        shadow.render(frame);
-        if (sky_occlusion) sky.render(frame);
-        opaque.render(frame);
-        if (with_dust) dust.render(frame);
-        tonemap.render(frame);
-        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-        return game::read_framebuffer_rgba8(output.id(), width, height);
-    }
-    static glm::ivec2 pixel_of(const sim::CameraView& view, glm::vec3 p) {
-        effects::Camera camera = effects::make_camera(view, float(kWidth) / float(kHeight));
-        glm::vec4 c = camera.view_proj * glm::vec4(p, 1.0f);
-        glm::vec2 ndc = glm::vec2(c) / c.w;
-        return {int((ndc.x * 0.5f + 0.5f) * kWidth), int((0.5f - ndc.y * 0.5f) * kHeight)};
-    }
-    sim::DustField& field() { return session.world->get<sim::DustField>(); }
+RenderStage dust_stage(const std::string& level = "harbour", int w = kWidth, int h = kHeight,
+                       StagePasses passes = kDustFrame) {
+    return RenderStage(level, {.width = w, .height = h, .passes = passes});
+}
 
-    int width, height;
-    bool sky_occlusion = true;
-    game::GameSession session;
-    effects::SceneResources scene;
-    effects::EnvironmentPass environment;
-    effects::ShadowPass shadow;
-    effects::SkyOcclusionPass sky;
-    effects::OpaquePass opaque;
-    effects::DustPass dust;
-    effects::TonemapPass tonemap;
-    effects::gl::Texture ldr;
-    effects::gl::Framebuffer output;
-};
+sim::DustField& field(RenderStage& stage) { return stage.world().get<sim::DustField>(); }
+
+glm::ivec2 pixel_of(const sim::CameraView& view, glm::vec3 p) {
+    effects::Camera camera = effects::make_camera(view, float(kWidth) / float(kHeight));
+    glm::vec4 c = camera.view_proj * glm::vec4(p, 1.0f);
+    glm::vec2 ndc = glm::vec2(c) / c.w;
+    return {int((ndc.x * 0.5f + 0.5f) * kWidth), int((0.5f - ndc.y * 0.5f) * kHeight)};
+}
 
 void save(const game::ImageRGBA8& img, const std::string& name) {
     if (const char* dir = std::getenv("SPINDRIFT_DUST_PNG_DIR")) game::write_png(std::filesystem::path(dir) / name, img);
@@ -144,14 +105,14 @@ protected:
 std::unique_ptr<game::HeadlessContext> DustRenderTest::context_;
 
 TEST_F(DustRenderTest, DustShowsOnTopsAndAClearedPatchShowsTheCrate) {
-    DustStage stage;
+    RenderStage stage = dust_stage();
     const sim::CameraView view = crate_view();
-    game::ImageRGBA8 bare = stage.render(view, false), dusty = stage.render(view, true);
+    game::ImageRGBA8 bare = stage.render(view, kWithoutDust), dusty = stage.render(view);
     save(bare, "crates_bare.png");
     save(dusty, "crates_dusty.png");
     // The second large crate's top: covered, and lighter than the dark pine.
     const glm::vec3 top{-49.1f, 2.43f, -46.3f};
-    const glm::ivec2 at = stage.pixel_of(view, top);
+    const glm::ivec2 at = pixel_of(view, top);
     ASSERT_TRUE(at.x > 20 && at.x < kWidth - 20 && at.y > 20 && at.y < kHeight - 20) << at.x << "," << at.y;
     WindowStats b = stats(bare, nullptr, at, 8), d = stats(dusty, &bare, at, 8);
     EXPECT_GT(d.changed, 0.6) << "most of the crate top is covered";
@@ -159,8 +120,8 @@ TEST_F(DustRenderTest, DustShowsOnTopsAndAClearedPatchShowsTheCrate) {
     EXPECT_GT(b.luma, 10.0) << "the crate is lit, not black";
 
     // Blow the dust off a patch of that top: the crate shows through again there.
-    stage.field().clear_along(top + glm::vec3(0.0f, 0.2f, 0.0f), top + glm::vec3(0.0f, 0.2f, 0.0f), 0.5f);
-    game::ImageRGBA8 cleared = stage.render(view, true);
+    field(stage).clear_along(top + glm::vec3(0.0f, 0.2f, 0.0f), top + glm::vec3(0.0f, 0.2f, 0.0f), 0.5f);
+    game::ImageRGBA8 cleared = stage.render(view);
     save(cleared, "crates_cleared.png");
     WindowStats c = stats(cleared, &bare, at, 4);
     EXPECT_LT(c.changed, 0.15);
@@ -168,28 +129,29 @@ TEST_F(DustRenderTest, DustShowsOnTopsAndAClearedPatchShowsTheCrate) {
 }
 
 TEST_F(DustRenderTest, FinsChangeGrazingViewsAndShellsThinOutWithDistance) {
-    DustStage stage;
+    RenderStage stage = dust_stage();
+    effects::DustPass& dust = stage.pass<effects::DustPass>();
     sim::CameraView grazing;
     grazing.eye = {-49.1f, 2.47f, -44.4f};  // just above the crate top, looking across it
     grazing.target = {-49.1f, 2.43f, -46.3f};
     grazing.fov_y_deg = 40.0f;
-    game::ImageRGBA8 bare = stage.render(grazing, false);
-    game::ImageRGBA8 with_fins = stage.render(grazing, true);
-    stage.dust.fins_enabled() = false;
-    game::ImageRGBA8 without_fins = stage.render(grazing, true);
+    game::ImageRGBA8 bare = stage.render(grazing, kWithoutDust);
+    game::ImageRGBA8 with_fins = stage.render(grazing);
+    dust.fins_enabled() = false;
+    game::ImageRGBA8 without_fins = stage.render(grazing);
     save(with_fins, "grazing_fins.png");
     save(without_fins, "grazing_no_fins.png");
-    const glm::ivec2 at = stage.pixel_of(grazing, {-49.1f, 2.44f, -46.3f});
+    const glm::ivec2 at = pixel_of(grazing, {-49.1f, 2.44f, -46.3f});
     EXPECT_GT(stats(with_fins, &without_fins, at, 30).changed, 0.02);
     EXPECT_GT(stats(with_fins, &bare, at, 30).changed, 0.05);
 
-    EXPECT_EQ(stage.dust.shells_at(1.0f), stage.dust.lod().max_shells);
-    EXPECT_GT(stage.dust.shells_at(2.0f), stage.dust.shells_at(10.0f));
-    EXPECT_EQ(stage.dust.shells_at(500.0f), stage.dust.lod().min_shells);
+    EXPECT_EQ(dust.shells_at(1.0f), dust.lod().max_shells);
+    EXPECT_GT(dust.shells_at(2.0f), dust.shells_at(10.0f));
+    EXPECT_EQ(dust.shells_at(500.0f), dust.lod().min_shells);
     // Fins only where the stack is tall enough on screen for its shells to show as lines.
-    stage.dust.fins_enabled() = true;
-    EXPECT_TRUE(stage.dust.fins_at(stage.dust.lod().fin_min_px));
-    EXPECT_FALSE(stage.dust.fins_at(0.5f * stage.dust.lod().fin_min_px));
+    dust.fins_enabled() = true;
+    EXPECT_TRUE(dust.fins_at(dust.lod().fin_min_px));
+    EXPECT_FALSE(dust.fins_at(0.5f * dust.lod().fin_min_px));
 }
 
 // Looking down on the crates and the shelf from 6 m and more, every prop beyond
@@ -197,27 +159,28 @@ TEST_F(DustRenderTest, FinsChangeGrazingViewsAndShellsThinOutWithDistance) {
 // the same tone.
 TEST_F(DustRenderTest, FromSixMetresTheCoarseLevelLooksLikeTheFineOne) {
     constexpr int W = 640, H = 360;
-    DustStage stage("harbour", W, H);
+    RenderStage stage = dust_stage("harbour", W, H);
+    effects::DustPass& dust = stage.pass<effects::DustPass>();
     sim::CameraView view;
     view.eye = {-44.0f, 6.5f, -41.0f};
     view.target = {-46.0f, 2.2f, -47.0f};
     view.fov_y_deg = 60.0f;
-    const game::ImageRGBA8 bare = stage.render(view, false), coarse = stage.render(view, true);
-    for (const sim::DustPropRange& prop : stage.field().surface().props()) {
+    const game::ImageRGBA8 bare = stage.render(view, kWithoutDust), coarse = stage.render(view);
+    for (const sim::DustPropRange& prop : field(stage).surface().props()) {
         const float d = glm::length(view.eye - glm::clamp(view.eye, prop.bounds.min, prop.bounds.max));
-        EXPECT_EQ(stage.dust.level_at(d), 1) << prop.name << " at " << d << " m";
+        EXPECT_EQ(dust.level_at(d), 1) << prop.name << " at " << d << " m";
     }
-    EXPECT_LT(stage.dust.geometry().dusty_triangles(1) * 3, stage.dust.geometry().dusty_triangles(0));
-    const float coarse_from = stage.dust.lod().coarse_from_m;
-    stage.dust.lod().coarse_from_m = 1000.0f;
-    const game::ImageRGBA8 fine = stage.render(view, true);
-    stage.dust.lod().coarse_from_m = coarse_from;
+    EXPECT_LT(dust.geometry().dusty_triangles(1) * 3, dust.geometry().dusty_triangles(0));
+    const float coarse_from = dust.lod().coarse_from_m;
+    dust.lod().coarse_from_m = 1000.0f;
+    const game::ImageRGBA8 fine = stage.render(view);
+    dust.lod().coarse_from_m = coarse_from;
     save(coarse, "view_coarse.png");
     save(fine, "view_fine.png");
     // Around each prop in view: how much the dust changed, and how bright it is there.
     const effects::Camera camera = effects::make_camera(view, float(W) / float(H));
     int seen = 0;
-    for (const sim::DustPropRange& prop : stage.field().surface().props()) {
+    for (const sim::DustPropRange& prop : field(stage).surface().props()) {
         const glm::vec4 clip = camera.view_proj * glm::vec4(prop.centre(), 1.0f);
         const glm::vec2 ndc = glm::vec2(clip) / clip.w;
         if (clip.w <= 0.0f || std::abs(ndc.x) > 0.9f || std::abs(ndc.y) > 0.9f) continue;
@@ -232,20 +195,20 @@ TEST_F(DustRenderTest, FromSixMetresTheCoarseLevelLooksLikeTheFineOne) {
 }
 
 TEST_F(DustRenderTest, UnderTheShelfBoardsThereIsLittleDust) {
-    DustStage stage;
+    RenderStage stage = dust_stage();
     sim::CameraView v;
     v.eye = {-39.6f, 3.9f, -46.6f};
     v.target = {-40.0f, 2.3f, -49.35f};
     v.fov_y_deg = 55.0f;
-    game::ImageRGBA8 bare = stage.render(v, false), dusty = stage.render(v, true);
+    game::ImageRGBA8 bare = stage.render(v, kWithoutDust), dusty = stage.render(v);
     save(bare, "shelf_bare.png");
     save(dusty, "shelf_dusty.png");
-    sim::DustField& f = stage.field();
+    sim::DustField& f = field(stage);
     const float top = f.amount_near({-40.0f, 2.88f, -49.35f}), middle = f.amount_near({-40.0f, 2.18f, -49.4f});
     EXPECT_GT(top, 0.6f);
     EXPECT_LT(middle, 0.6f * top);
     // The top board is covered on screen; the dust changed it.
-    EXPECT_GT(stats(dusty, &bare, stage.pixel_of(v, {-40.0f, 2.88f, -49.12f}), 2).changed, 0.5);
+    EXPECT_GT(stats(dusty, &bare, pixel_of(v, {-40.0f, 2.88f, -49.12f}), 2).changed, 0.5);
 }
 
 TEST_F(DustRenderTest, SandAndMouldPresetsComeFromTheSameMachinery) {
@@ -266,30 +229,30 @@ TEST_F(DustRenderTest, SandAndMouldPresetsComeFromTheSameMachinery) {
     game::ImageRGBA8 dust, sand;
     glm::vec3 small_top{0.0f};
     {
-        DustStage stage;
-        dust = stage.render(crate_view(), true);
+        RenderStage stage = dust_stage();
+        dust = stage.render(crate_view());
     }
     {
-        DustStage stage((dir / "presets.json").string());
-        sand = stage.render(crate_view(), true);
+        RenderStage stage = dust_stage((dir / "presets.json").string());
+        sand = stage.render(crate_view());
         save(sand, "crates_sand_mould.png");
-        EXPECT_EQ(stage.field().surface().props()[0].kind, sim::DustKind::Sand);
-        const sim::DustPropRange& small = stage.field().surface().props()[2];
+        EXPECT_EQ(field(stage).surface().props()[0].kind, sim::DustKind::Sand);
+        const sim::DustPropRange& small = field(stage).surface().props()[2];
         EXPECT_EQ(small.kind, sim::DustKind::Mould);
         small_top = {small.centre().x, small.bounds.max.y, small.centre().z};
         // Sand slides off anything steeper than its angle of repose: the crate sides
         // hold none even where dust would lie thinly.
-        const auto& s = stage.field().surface();
+        const auto& s = field(stage).surface();
         for (uint32_t v = 0; v < s.props()[0].vertex_count; v += 7) {
             if (s.normals()[s.props()[0].first_vertex + v].y < 0.7f) {
-                EXPECT_EQ(stage.field().amounts()[s.props()[0].first_vertex + v], 0.0f);
+                EXPECT_EQ(field(stage).amounts()[s.props()[0].first_vertex + v], 0.0f);
             }
         }
     }
     fs::remove_all(dir);
-    const glm::ivec2 at = DustStage::pixel_of(crate_view(), {-49.1f, 2.43f, -46.3f});
+    const glm::ivec2 at = pixel_of(crate_view(), {-49.1f, 2.43f, -46.3f});
     EXPECT_GT(stats(sand, &dust, at, 8).changed, 0.5) << "sand looks unlike dust";
-    const glm::ivec2 small_at = DustStage::pixel_of(crate_view(), small_top);
+    const glm::ivec2 small_at = pixel_of(crate_view(), small_top);
     ASSERT_TRUE(small_at.x > 6 && small_at.x < kWidth - 6 && small_at.y > 6 && small_at.y < kHeight - 6)
         << small_at.x << "," << small_at.y;
     const WindowStats mould = stats(sand, &dust, small_at, 3);
@@ -301,8 +264,8 @@ TEST_F(DustRenderTest, SandAndMouldPresetsComeFromTheSameMachinery) {
 // 640x360, so a change to the fibres, shells or their light shows as a failure here.
 TEST_F(DustRenderTest, CloseUpOfTheCratesMatchesItsGolden) {
     constexpr int W = 640, H = 360;
-    DustStage stage("harbour", W, H);
-    const game::ImageRGBA8 bare = stage.render(close_view(), false), dusty = stage.render(close_view(), true);
+    RenderStage stage = dust_stage("harbour", W, H);
+    const game::ImageRGBA8 bare = stage.render(close_view(), kWithoutDust), dusty = stage.render(close_view());
     save(dusty, "crates_closeup.png");
     // Most of the frame is the dusty crate top, and it is not a flat coat.
     const WindowStats d = stats(dusty, &bare, {W / 2, H / 2}, 60);
@@ -320,8 +283,8 @@ TEST_F(DustRenderTest, CloseUpOfTheCratesMatchesItsGolden) {
 // Inside the warehouse the floor loses the sky's blue ambient light to its roof; out
 // on the shore road, away from every prop, nothing changes.
 TEST_F(DustRenderTest, UnderTheWarehouseRoofTheSkyLightGoesAndOutsideNothingChanges) {
-    DustStage roofed_stage, open_sky;
-    open_sky.sky_occlusion = false;
+    RenderStage roofed_stage = dust_stage();
+    RenderStage open_sky = dust_stage("harbour", kWidth, kHeight, kDustFrame & ~kSkyOcclusionPass);
     sim::CameraView floor;
     floor.eye = {-36.0f, 2.5f, -33.0f};
     floor.target = {-40.0f, 1.2f, -38.0f};
@@ -330,7 +293,8 @@ TEST_F(DustRenderTest, UnderTheWarehouseRoofTheSkyLightGoesAndOutsideNothingChan
     road.eye = {-80.0f, 4.0f, -30.0f};
     road.target = {-80.0f, 1.0f, -10.0f};
     road.fov_y_deg = 50.0f;
-    const game::ImageRGBA8 roofed = roofed_stage.render(floor, false), unroofed = open_sky.render(floor, false);
+    const game::ImageRGBA8 roofed = roofed_stage.render(floor, kWithoutDust),
+                           unroofed = open_sky.render(floor, kWithoutDust);
     save(roofed, "sky_occlusion_floor.png");
     save(unroofed, "sky_occlusion_floor_open.png");
     auto blueness = [](const game::ImageRGBA8& img) {  // blue over red, the lower half
@@ -345,7 +309,8 @@ TEST_F(DustRenderTest, UnderTheWarehouseRoofTheSkyLightGoesAndOutsideNothingChan
     EXPECT_LT(stats(roofed, nullptr, centre, 30).luma, 0.8 * stats(unroofed, nullptr, centre, 30).luma);
     EXPECT_LT(blueness(roofed), 1.2);
     EXPECT_GT(blueness(unroofed), 1.5);
-    const game::ImageRGBA8 outside = roofed_stage.render(road, false), outside_open = open_sky.render(road, false);
+    const game::ImageRGBA8 outside = roofed_stage.render(road, kWithoutDust),
+                           outside_open = open_sky.render(road, kWithoutDust);
     save(outside, "sky_occlusion_road.png");
     const game::CompareResult same = game::compare_frames(outside, outside_open);
     EXPECT_TRUE(same.passed) << same.summary;

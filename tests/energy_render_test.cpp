@@ -17,16 +17,10 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "RenderStage.h"
 #include "SimTestLevel.h"
-#include "effects/energy/EnergyLightPass.h"
 #include "effects/energy/EnergyPass.h"
 #include "effects/energy/EnergyProbe.h"
-#include "effects/scene/EnvironmentPass.h"
-#include "effects/scene/OpaquePass.h"
-#include "effects/scene/SceneCopyPass.h"
-#include "effects/scene/ShadowPass.h"
-#include "effects/scene/SkyOcclusionPass.h"
-#include "effects/water/WaterPass.h"
 #include "game/capture/Readback.h"
 #include "sim/weapon/Weapon.h"
 #include "game/capture/FrameCompare.h"
@@ -387,30 +381,18 @@ LineLightGain line_light_gain(const game::ImageRGBA32F& dark, const game::ImageR
 // opaque scene (the ground under it) brightens near the beam and nowhere far from it.
 TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     constexpr int W = 160, H = 100;
-    sim::World world(make_test_level());
-    effects::SceneDesc desc;
-    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
-                                  effects::SceneTargets{}};
-    scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
-    scene.lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
-    scene.targets.resize(W, H);
+    RenderStage stage(make_test_level(),
+                      {.width = W, .height = H, .passes = kLitScene | kEnergyLightPass, .shadow_map_size = 512});
+    stage.scene().lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    sim::World& world = stage.world();
     sim::CameraView view;
     view.eye = {-20.0f, 14.0f, -30.0f};
     view.target = {-20.0f, 1.0f, -14.0f};
-    const effects::Camera cam = effects::make_camera(view, float(W) / float(H));
-    effects::EnvironmentPass environment;
-    effects::ShadowPass shadow;
-    effects::SkyOcclusionPass sky;
-    effects::OpaquePass opaque;
-    effects::EnergyLightPass lights;
+    const effects::Camera cam = stage.camera(view);
+    effects::EnergyLightPass& lights = stage.pass<effects::EnergyLightPass>();
     auto render = [&]() {
-        effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
-        environment.render(frame);
-        shadow.render(frame);
-        sky.render(frame);
-        lights.render(frame);
-        opaque.render(frame);
-        return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+        stage.draw(cam);
+        return stage.hdr();
     };
     const game::ImageRGBA32F dark = render();
     // A grown shot 2 m over the land, across the view.
@@ -434,29 +416,20 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
 // under a shot brightens and the sea far from it does not.
 TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
     constexpr int W = 160, H = 100;
-    sim::World world(make_test_level());  // no wave grid: the water pass draws a flat sea at 0
-    effects::SceneDesc desc;
-    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
-                                  effects::SceneTargets{}};
-    scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
-    scene.lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
-    scene.targets.resize(W, H);
+    // No wave grid in the world: the water pass draws a flat sea at 0.
+    RenderStage stage(make_test_level(), {.width = W,
+                                          .height = H,
+                                          .passes = kLitScene | kEnergyLightPass | kSceneCopyPass | kWaterPass,
+                                          .shadow_map_size = 512});
+    stage.scene().lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    sim::World& world = stage.world();
     sim::CameraView view;
     view.eye = {60.0f, 14.0f, 30.0f};
     view.target = {60.0f, 0.0f, 46.0f};
-    const effects::Camera cam = effects::make_camera(view, float(W) / float(H));
-    effects::EnvironmentPass environment;
-    effects::ShadowPass shadow;
-    effects::SkyOcclusionPass sky;
-    effects::EnergyLightPass lights;
-    effects::OpaquePass opaque;
-    effects::SceneCopyPass copy;
-    effects::WaterPass water;
+    const effects::Camera cam = stage.camera(view);
     auto render = [&]() {
-        effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
-        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &lights, &opaque, &copy, &water})
-            p->render(frame);
-        return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+        stage.draw(cam);
+        return stage.hdr();
     };
     const game::ImageRGBA32F dark = render();
     // A shot 2 m over the sea, across the view.
@@ -486,21 +459,19 @@ TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
 // bloom spreads some of it beyond the field's reach, only near the beam.
 TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
     constexpr int W = 160, H = 96;
-    sim::World world(make_test_level());
-    effects::SceneDesc desc;
-    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
-                                  effects::SceneTargets{}};
-    scene.targets.resize(W, H);
+    // The scene's targets only: the test clears them and draws the pass itself.
+    RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = 0, .shadow_map_size = 512});
+    const GLuint scene = stage.scene().targets.scene().id();
     const effects::Camera cam = look({0, 20, 0}, {0, 20, -1}, W, H);  // level, at the sky
     const std::vector<EnergySegment> beam = {segment({-3, 20, -15}, {1, 0, 0}, 6.0f, 0.12f, 1.1f)};
     auto frame_with = [&](float bloom) {
         const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-        glClearNamedFramebufferfv(scene.targets.scene().id(), GL_COLOR, 0, zero);
+        glClearNamedFramebufferfv(scene, GL_COLOR, 0, zero);
         const float far = 1.0f;
-        glClearNamedFramebufferfv(scene.targets.scene().id(), GL_DEPTH, 0, &far);
+        glClearNamedFramebufferfv(scene, GL_DEPTH, 0, &far);
         pass.look().bloom = bloom;
-        pass.draw({world, cam, scene, {0, W, H}, 0.0}, beam);
-        return game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+        pass.draw(stage.context(cam), beam);
+        return stage.hdr();
     };
     const game::ImageRGBA32F plain = frame_with(0.0f), bloomed = frame_with(0.5f);
     // Blue: the glow colour's strongest channel.
@@ -519,22 +490,14 @@ TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
 // scene depth, so the part under the water is hidden like the part behind a wall.
 TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
     constexpr int W = 128, H = 96;
-    sim::World world(make_test_level());  // no wave grid: the water pass draws a flat sea at 0
-    effects::SceneDesc desc;
-    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 512),
-                                  effects::SceneTargets{}};
-    scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
-    scene.targets.resize(W, H);
+    // No wave grid in the world: the water pass draws a flat sea at 0. The scene copy
+    // keeps the depth before the water.
+    RenderStage stage(make_test_level(), {.width = W,
+                                          .height = H,
+                                          .passes = kLitScene | kSceneCopyPass | kWaterPass,
+                                          .shadow_map_size = 512});
     const effects::Camera cam = look({40.0f, 3.0f, 10.0f}, {40.0f, 0.0f, 30.0f}, W, H);
-    effects::EnvironmentPass environment;
-    effects::ShadowPass shadow;
-    effects::SkyOcclusionPass sky;
-    effects::OpaquePass opaque;
-    effects::SceneCopyPass copy;  // the depth before the water
-    effects::WaterPass water;
-    effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0};
-    for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &opaque, &copy, &water})
-        p->render(frame);
+    stage.draw(cam);
     const std::vector<EnergySegment> beam = {segment({40.0f, -3.0f, 30.0f}, {0, 1, 0}, 6.0f, 0.12f, 1.1f)};
 
     effects::gl::Texture target = effects::gl::Texture::create_2d("test.energy", GL_RGBA32F, W, H);
@@ -549,8 +512,8 @@ TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
         pass.draw_field(cam, depth, W, H, beam, true);
         return game::read_framebuffer_rgba32f(fbo.id(), GL_COLOR_ATTACHMENT0, W, H);
     };
-    const game::ImageRGBA32F seabed = energy_over(scene.targets.depth_copy());
-    const game::ImageRGBA32F surface = energy_over(scene.targets.depth());
+    const game::ImageRGBA32F seabed = energy_over(stage.scene().targets.depth_copy());
+    const game::ImageRGBA32F surface = energy_over(stage.scene().targets.depth());
     // Rows top-down: the head (y = 3) above the horizon of the view, the foot under water.
     auto column_sum = [&](const game::ImageRGBA32F& img, int y0, int y1) {
         double sum = 0.0;
@@ -572,9 +535,8 @@ TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
     std::printf("water occlusion: H summed over the view %.1f over the sea bed, %.1f over the sea surface\n",
                 all_seabed, all_surface);
     if (const char* png_dir = std::getenv("SPINDRIFT_ENERGY_PNG_DIR")) {
-        pass.draw(frame, beam);
-        const game::ImageRGBA32F hdr =
-            game::read_framebuffer_rgba32f(scene.targets.scene().id(), GL_COLOR_ATTACHMENT0, W, H);
+        pass.draw(stage.context(cam), beam);
+        const game::ImageRGBA32F hdr = stage.hdr();
         game::ImageRGBA8 image{W, H, std::vector<uint8_t>(size_t(W) * H * 4, 255)};
         for (size_t i = 0; i < size_t(W) * H; ++i)
             for (size_t k = 0; k < 3; ++k) {

@@ -18,63 +18,34 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
-#include "effects/Renderer.h"
-#include "effects/gl/Framebuffer.h"
-#include "game/capture/FrameCapture.h"
+#include "RenderStage.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
-#include "game/capture/Readback.h"
 #include "game/platform/HeadlessContext.h"
 #include "game/replay/InputScript.h"
-#include "game/session/GameSession.h"
 #include "sim/weapon/Weapon.h"
 
 namespace {
 
 constexpr int kWidth = 640, kHeight = 360;
 
-// The harbour and the game's whole pass list, drawn from a camera of the test's choosing.
-struct HarbourStage {
-    HarbourStage()
-        : session(game::GameSession::open("harbour", 1)),
-          scene{session.level.scene, effects::SceneGeometry(session.level.scene, session.world->terrain()),
-                effects::SceneLighting(64, 1024), effects::SceneTargets{}},
-          passes(effects::make_pass_list()), capture(kWidth, kHeight) {
-        scene.lighting.sky.sun_dir = glm::normalize(session.world->level().sun_direction);
-        scene.targets.resize(kWidth, kHeight);
-        for (auto& p : passes) {
-            p->register_params(params);
-            p->resize(kWidth, kHeight);
-        }
-        depth_fbo = effects::gl::Framebuffer::create("test.scene_depth");
-        depth_fbo.attach_depth(scene.targets.depth());
-    }
+// The harbour and the game's whole frame, drawn from a camera of the test's choosing.
+RenderStage harbour() {
+    return RenderStage("harbour", {.width = kWidth, .height = kHeight, .passes = kEveryPass, .environment_size = 64});
+}
 
-    // Holds `input` for one tick, then nothing for `ticks - 1` more.
-    void step(sim::TickInput input, int ticks) {
-        session.world->step(input);
-        for (int i = 1; i < ticks; ++i) session.world->step({});
-    }
+// Holds `input` for one tick, then nothing for `ticks - 1` more.
+void step(RenderStage& stage, sim::TickInput input, int ticks) {
+    stage.world().step(input);
+    for (int i = 1; i < ticks; ++i) stage.world().step({});
+}
 
-    game::ImageRGBA8 render(const effects::Camera& camera) {
-        effects::FrameContext frame{*session.world, camera, scene, capture.output(),
-                                    double(session.world->tick()) * sim::kTickSeconds};
-        for (auto& p : passes) p->render(frame);
-        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-        return capture.read();
-    }
-    // Window depth of the last frame's scene (opaque and water): where the glow's rays stop.
-    std::vector<float> scene_depth() { return game::read_depth(depth_fbo.id(), kWidth, kHeight); }
+// At the sim's time, as the game's renderer draws it.
+game::ImageRGBA8 render(RenderStage& stage, const effects::Camera& camera) {
+    return stage.render(camera, {.time_s = double(stage.world().tick()) * sim::kTickSeconds});
+}
 
-    const sim::Shot& shot() const { return session.world->get<sim::Weapon>().shots().at(0); }
-
-    game::GameSession session;
-    effects::SceneResources scene;
-    std::vector<std::unique_ptr<effects::Pass>> passes;
-    effects::ParamRegistry params;
-    game::FrameCapture capture;
-    effects::gl::Framebuffer depth_fbo;
-};
+const sim::Shot& shot_of(RenderStage& stage) { return stage.world().get<sim::Weapon>().shots().at(0); }
 
 sim::TickInput fire() {
     sim::TickInput in;
@@ -192,21 +163,21 @@ std::unique_ptr<game::HeadlessContext> EnergySceneTest::context_;
 // Fired from the car at rest on the shore road, along +x: the ball just out of the
 // muzzle, then the beam half a second on, both seen from the warehouse's side of the road.
 TEST_F(EnergySceneTest, ShotFromTheCarReadsAsABeamSideOn) {
-    HarbourStage shot, plain;  // the same harbour, only one with the weapon fired
-    shot.step(fire(), kBallAge);
-    plain.step({}, kBallAge);
-    const Path ball = path_of(shot.shot());
+    RenderStage shot = harbour(), plain = harbour();  // the same harbour, only one with the weapon fired
+    step(shot, fire(), kBallAge);
+    step(plain, {}, kBallAge);
+    const Path ball = path_of(shot_of(shot));
     const glm::vec3 ball_at = 0.5f * (ball.tail + ball.head);
     const effects::Camera ball_cam = camera_at(ball_at + glm::vec3(0.0f, 0.6f, -6.0f), ball_at);
-    const game::ImageRGBA8 ball_frame = shot.render(ball_cam), ball_plain = plain.render(ball_cam);
+    const game::ImageRGBA8 ball_frame = render(shot, ball_cam), ball_plain = render(plain, ball_cam);
 
-    shot.step({}, kBeamAge - kBallAge);
-    plain.step({}, kBeamAge - kBallAge);
-    ASSERT_FALSE(shot.shot().hit());
-    const Path beam = path_of(shot.shot());
+    step(shot, {}, kBeamAge - kBallAge);
+    step(plain, {}, kBeamAge - kBallAge);
+    ASSERT_FALSE(shot_of(shot).hit());
+    const Path beam = path_of(shot_of(shot));
     const glm::vec3 mid = 0.5f * (beam.tail + beam.head);
     const effects::Camera beam_cam = camera_at(mid + glm::vec3(0.0f, 5.0f, -kSideOnM), mid);
-    const game::ImageRGBA8 beam_frame = shot.render(beam_cam), beam_plain = plain.render(beam_cam);
+    const game::ImageRGBA8 beam_frame = render(shot, beam_cam), beam_plain = render(plain, beam_cam);
     save(ball_plain, "ball_plain.png");
     save(beam_plain, "beam_plain.png");
 
@@ -237,7 +208,7 @@ TEST_F(EnergySceneTest, ShotFromTheCarReadsAsABeamSideOn) {
     EXPECT_LT(glm::distance(s.centre, 0.5f * (tail_px + head_px)), 0.1f * path_px);
     // White along its core, blue in the glow around it.
     int white = 0;
-    const std::vector<glm::vec3> axis = along_segments(shot.shot(), 16);
+    const std::vector<glm::vec3> axis = along_segments(shot_of(shot), 16);
     for (const glm::vec3& p : axis) {
         const glm::ivec2 px(project(beam_cam, p).px);
         const uint8_t* c = &beam_frame.pixels[(size_t(px.y) * kWidth + px.x) * 4];
@@ -270,22 +241,22 @@ TEST_F(EnergySceneTest, WarehouseCornerCutsTheBeamOff) {
                                    "180 hold throttle steer_left\n196 hold brake\n";
     const game::InputScript drive = game::parse_script(std::string(kDrive) + "201 end\n", "drive");
     constexpr uint32_t kFireTick = 170;
-    HarbourStage shot, plain;
+    RenderStage shot = harbour(), plain = harbour();
     for (uint32_t t = 0; t < drive.end_tick; ++t) {
         sim::TickInput in = drive.inputs[t];
-        plain.session.world->step(in);
+        plain.world().step(in);
         in.set(sim::Control::Fire, t == kFireTick);
-        shot.session.world->step(in);
+        shot.world().step(in);
     }
-    ASSERT_FALSE(shot.shot().hit());
-    const Path beam = path_of(shot.shot());
+    ASSERT_FALSE(shot_of(shot).hit());
+    const Path beam = path_of(shot_of(shot));
     std::printf("corner beam: tail %.1f %.1f %.1f head %.1f %.1f %.1f age %u\n", beam.tail.x, beam.tail.y, beam.tail.z,
-                beam.head.x, beam.head.y, beam.head.z, shot.shot().age_ticks);
+                beam.head.x, beam.head.y, beam.head.z, shot_of(shot).age_ticks);
     const glm::vec3 mid = 0.5f * (beam.tail + beam.head);
     const effects::Camera cam = camera_at(kCornerEye, mid);
-    const game::ImageRGBA8 frame = shot.render(cam);
-    const std::vector<float> depth = shot.scene_depth();
-    const game::ImageRGBA8 without = plain.render(cam);
+    const game::ImageRGBA8 frame = render(shot, cam);
+    const std::vector<float> depth = shot.depth();
+    const game::ImageRGBA8 without = render(plain, cam);
     save(without, "corner_plain.png");
     // Where the opaque scene is nearer than the beam, the beam is hidden; elsewhere it shows.
     struct Sample {
@@ -293,7 +264,7 @@ TEST_F(EnergySceneTest, WarehouseCornerCutsTheBeamOff) {
         bool hidden;
     };
     std::vector<Sample> samples;
-    for (const glm::vec3& p : along_segments(shot.shot(), 32)) {
+    for (const glm::vec3& p : along_segments(shot_of(shot), 32)) {
         const Projected q = project(cam, p);
         if (!on_screen(q.px)) continue;
         const glm::ivec2 px(q.px);

@@ -15,22 +15,12 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "RenderStage.h"
 #include "SimTestLevel.h"
 #include "effects/fluid/FluidPass.h"
-#include "effects/gl/Framebuffer.h"
-#include "effects/gl/Texture.h"
-#include "effects/scene/EnvironmentPass.h"
-#include "effects/scene/OpaquePass.h"
-#include "effects/scene/SceneCopyPass.h"
-#include "effects/scene/ShadowPass.h"
-#include "effects/scene/SkyOcclusionPass.h"
-#include "effects/scene/TonemapPass.h"
-#include "effects/water/WaterPass.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
-#include "game/capture/Readback.h"
 #include "game/platform/HeadlessContext.h"
-#include "game/session/GameSession.h"
 #include "sim/fluid/FluidTank.h"
 #include "sim/objects/ThrownObjects.h"
 
@@ -56,47 +46,8 @@ sim::CameraView tank_view() {
     return v;
 }
 
-struct Stage {
-    Stage()
-        : world(tank_level()),
-          scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(32, 1024),
-                effects::SceneTargets{}},
-          camera(effects::make_camera(tank_view(), float(kWidth) / float(kHeight))) {
-        scene.lighting.sky.sun_dir = glm::normalize(world.level().sun_direction);
-        scene.targets.resize(kWidth, kHeight);
-        ldr = effects::gl::Texture::create_2d("test.ldr", GL_RGBA8, kWidth, kHeight);
-        output = effects::gl::Framebuffer::create("test.output");
-        output.attach_colour(0, ldr);
-        output.check_complete();
-    }
-
-    // The world's tank, or (with `view`) the given one.
-    game::ImageRGBA8 render(bool with_fluid, const effects::FluidView* view = nullptr) {
-        effects::FrameContext frame{world, camera, scene, {output.id(), kWidth, kHeight}, 0.0};
-        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &opaque, &copy, &water})
-            p->render(frame);
-        if (with_fluid && view) fluid.draw(frame, *view);
-        else if (with_fluid) fluid.render(frame);
-        tonemap.render(frame);
-        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-        return game::read_framebuffer_rgba8(output.id(), kWidth, kHeight);
-    }
-
-    sim::World world;
-    effects::SceneDesc desc;
-    effects::SceneResources scene;
-    effects::Camera camera;
-    effects::EnvironmentPass environment;
-    effects::ShadowPass shadow;
-    effects::SkyOcclusionPass sky;
-    effects::OpaquePass opaque;
-    effects::SceneCopyPass copy;
-    effects::WaterPass water;
-    effects::FluidPass fluid;
-    effects::TonemapPass tonemap;
-    effects::gl::Texture ldr;
-    effects::gl::Framebuffer output;
-};
+// The lit scene, the water, the tank and the tonemap.
+constexpr StagePasses kTankFrame = kLitScene | kSceneCopyPass | kWaterPass | kFluidPass | kTonemapPass;
 
 void maybe_write_png(const std::string& name, const game::ImageRGBA8& img) {
     if (const char* dir = std::getenv("SPINDRIFT_FLUID_PNG_DIR"))
@@ -126,23 +77,34 @@ protected:
     static void TearDownTestSuite() { context_.reset(); }
     void SetUp() override {
         context_->make_current();
-        stage_ = std::make_unique<Stage>();
-        for (int t = 0; t < 45; ++t) stage_->world.step({});  // settled
+        stage_ = std::make_unique<RenderStage>(
+            tank_level(), StageOptions{.width = kWidth, .height = kHeight, .passes = kTankFrame});
+        for (int t = 0; t < 45; ++t) stage_->world().step({});  // settled
     }
     void TearDown() override { stage_.reset(); }
 
+    // The world's tank, or (with `view`) the given one.
+    game::ImageRGBA8 render(bool with_fluid, const effects::FluidView* view = nullptr) {
+        if (!with_fluid) return stage_->render(camera_, {.skip = kFluidPass});
+        if (!view) return stage_->render(camera_);
+        auto draw_view = [&](const effects::FrameContext& frame) { fluid_pass().draw(frame, *view); };
+        return stage_->render(camera_, {.replaced = kFluidPass, .replacement = draw_view});
+    }
+    effects::FluidPass& fluid_pass() { return stage_->pass<effects::FluidPass>(); }
+
     static std::unique_ptr<game::HeadlessContext> context_;
-    std::unique_ptr<Stage> stage_;
+    std::unique_ptr<RenderStage> stage_;
+    const effects::Camera camera_ = effects::make_camera(tank_view(), float(kWidth) / float(kHeight));
 };
 
 std::unique_ptr<game::HeadlessContext> FluidRenderTest::context_;
 
 TEST_F(FluidRenderTest, TheTankRefractsAndTintsOnlyInsideItsRectangle) {
-    const game::ImageRGBA8 without = stage_->render(false);
-    const game::ImageRGBA8 with = stage_->render(true);
+    const game::ImageRGBA8 without = render(false);
+    const game::ImageRGBA8 with = render(true);
     maybe_write_png("tank_without", without);
     maybe_write_png("tank_with", with);
-    const glm::ivec4 r = stage_->fluid.last_rect();
+    const glm::ivec4 r = fluid_pass().last_rect();
     ASSERT_GT(r.z - r.x, 20);
     ASSERT_GT(r.w - r.y, 20);
     // The rectangle is a part of the screen, not all of it.
@@ -160,10 +122,10 @@ TEST_F(FluidRenderTest, TheTankRefractsAndTintsOnlyInsideItsRectangle) {
 
     // Beer-Lambert: with the liquid's absorption, red (absorbed most) falls against
     // green and blue where the liquid is, compared with a clear liquid.
-    const float absorption = stage_->fluid.look().absorption_per_m;
-    stage_->fluid.look().absorption_per_m = 0.0f;
-    const game::ImageRGBA8 clear = stage_->render(true);
-    stage_->fluid.look().absorption_per_m = absorption;
+    const float absorption = fluid_pass().look().absorption_per_m;
+    fluid_pass().look().absorption_per_m = 0.0f;
+    const game::ImageRGBA8 clear = render(true);
+    fluid_pass().look().absorption_per_m = absorption;
     maybe_write_png("tank_clear", clear);
     glm::vec3 tinted_sum(0.0f), clear_sum(0.0f);
     int liquid = 0;
@@ -182,12 +144,12 @@ TEST_F(FluidRenderTest, TheTankRefractsAndTintsOnlyInsideItsRectangle) {
 
 TEST_F(FluidRenderTest, TheLiquidBendsTheBackgroundBeyondTheGlassTint) {
     // A clear liquid, so what changes is where each pixel looks, not its colour.
-    stage_->fluid.look().absorption_per_m = 0.0f;
-    const game::ImageRGBA8 without = stage_->render(false);
-    stage_->fluid.look().ior = 1.0f;
-    const game::ImageRGBA8 unbent = stage_->render(true);
-    stage_->fluid.look().ior = 1.33f;
-    const game::ImageRGBA8 bent = stage_->render(true);
+    fluid_pass().look().absorption_per_m = 0.0f;
+    const game::ImageRGBA8 without = render(false);
+    fluid_pass().look().ior = 1.0f;
+    const game::ImageRGBA8 unbent = render(true);
+    fluid_pass().look().ior = 1.33f;
+    const game::ImageRGBA8 bent = render(true);
     maybe_write_png("tank_ior_1_00", unbent);
     maybe_write_png("tank_ior_1_33", bent);
     // With the index of air the rays go straight through: the scene behind, under the
@@ -206,19 +168,20 @@ TEST_F(FluidRenderTest, TheLiquidBendsTheBackgroundBeyondTheGlassTint) {
 }
 
 TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
-    stage_->world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.2f, 30.0f}, {0, 0, 1}, {0, 0, 0});
+    sim::World& world = stage_->world();
+    world.get<sim::ThrownObjects>().launch({0.2f, 2600.0f, 0.0f}, {24.0f, 3.2f, 30.0f}, {0, 0, 1}, {0, 0, 0});
     // Until the drops are up (at most a second).
-    for (int t = 0; t < 60 && stage_->world.get<sim::FluidTank>().fluid().splash_count() < 25; ++t) stage_->world.step({});
+    for (int t = 0; t < 60 && world.get<sim::FluidTank>().fluid().splash_count() < 25; ++t) world.step({});
     effects::FluidView view;
-    ASSERT_TRUE(effects::gather_fluid_view(stage_->world, view));
+    ASSERT_TRUE(effects::gather_fluid_view(world, view));
     ASSERT_GE(view.splash.size(), 25u);
-    const game::ImageRGBA8 splash = stage_->render(true);
+    const game::ImageRGBA8 splash = render(true);
     maybe_write_png("tank_splash", splash);
     // Without the splash layer, those pixels show what is behind the drops.
-    const glm::ivec4 r = stage_->fluid.last_rect();
+    const glm::ivec4 r = fluid_pass().last_rect();
     int drop_pixels = 0;
     for (const sim::FluidEllipsoid& e : view.splash) {
-        glm::vec4 c = stage_->camera.view_proj * glm::vec4(e.centre, 1.0f);
+        glm::vec4 c = camera_.view_proj * glm::vec4(e.centre, 1.0f);
         glm::vec2 px = (glm::vec2(c) / c.w * 0.5f + 0.5f) * glm::vec2(kWidth, kHeight);
         drop_pixels += (px.x >= r.x && px.x < r.z && px.y >= r.y && px.y < r.w) ? 1 : 0;
     }
@@ -227,12 +190,12 @@ TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
     // scene behind them).
     effects::FluidView body_only = view;
     body_only.splash.clear();
-    const game::ImageRGBA8 no_drops = stage_->render(true, &body_only);
+    const game::ImageRGBA8 no_drops = render(true, &body_only);
     maybe_write_png("tank_splash_emptied", no_drops);
     EXPECT_GT(pixels_differing(splash, no_drops, 12.0f), 100);  // 175 here
     int drops_seen = 0, drops_on_screen = 0;
     for (const sim::FluidEllipsoid& e : view.splash) {
-        glm::vec4 c = stage_->camera.view_proj * glm::vec4(e.centre, 1.0f);
+        glm::vec4 c = camera_.view_proj * glm::vec4(e.centre, 1.0f);
         glm::ivec2 px(glm::floor((glm::vec2(c) / c.w * 0.5f + 0.5f) * glm::vec2(kWidth, kHeight)));
         if (px.x < 1 || px.y < 1 || px.x >= kWidth - 1 || px.y >= kHeight - 1) continue;
         ++drops_on_screen;
@@ -248,28 +211,28 @@ TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
 }
 
 TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
-    stage_->fluid.set_smoothing(effects::FluidSmoothing::defaults(effects::SmoothingMethod::Bilateral));
+    fluid_pass().set_smoothing(effects::FluidSmoothing::defaults(effects::SmoothingMethod::Bilateral));
     effects::FluidSmoothing s;
     s.kernel_size = 8;
-    EXPECT_THROW(stage_->fluid.set_smoothing(s), std::invalid_argument);
+    EXPECT_THROW(fluid_pass().set_smoothing(s), std::invalid_argument);
     s.kernel_size = 17;
-    EXPECT_THROW(stage_->fluid.set_smoothing(s), std::invalid_argument);
+    EXPECT_THROW(fluid_pass().set_smoothing(s), std::invalid_argument);
     s.kernel_size = 9;
     s.iterations = 0;
-    EXPECT_THROW(stage_->fluid.set_smoothing(s), std::invalid_argument);
+    EXPECT_THROW(fluid_pass().set_smoothing(s), std::invalid_argument);
     EXPECT_THROW(effects::smoothing_method("gaussian"), std::invalid_argument);
     // A refused setting leaves the pass as it was.
-    EXPECT_EQ(stage_->fluid.smoothing().method, effects::SmoothingMethod::Bilateral);
-    EXPECT_EQ(stage_->fluid.smoothing().kernel_size, 7);
-    EXPECT_EQ(stage_->fluid.smoothing().iterations, 22);
+    EXPECT_EQ(fluid_pass().smoothing().method, effects::SmoothingMethod::Bilateral);
+    EXPECT_EQ(fluid_pass().smoothing().kernel_size, 7);
+    EXPECT_EQ(fluid_pass().smoothing().iterations, 22);
     // Each of the three methods draws the liquid, and each smooths it its own way.
-    const game::ImageRGBA8 without = stage_->render(false);
+    const game::ImageRGBA8 without = render(false);
     std::vector<game::ImageRGBA8> images;
     for (auto m : {effects::SmoothingMethod::PlaneFit, effects::SmoothingMethod::Bilateral,
                    effects::SmoothingMethod::NarrowRange}) {
         EXPECT_EQ(effects::smoothing_method(effects::smoothing_name(m)), m);
-        stage_->fluid.set_smoothing(effects::FluidSmoothing::defaults(m));
-        images.push_back(stage_->render(true));
+        fluid_pass().set_smoothing(effects::FluidSmoothing::defaults(m));
+        images.push_back(render(true));
         maybe_write_png("tank_" + std::string(effects::smoothing_name(m)), images.back());
         // About 10500 pixels here, the glass included.
         EXPECT_GT(pixels_differing(without, images.back(), 6.0f), 5000) << effects::smoothing_name(m);
@@ -287,44 +250,6 @@ protected:
     void SetUp() override { context_->make_current(); }
 };
 
-struct HarbourStage {
-    static constexpr int kW = 640, kH = 360;
-    HarbourStage()
-        : session(game::GameSession::open("harbour", 1)),
-          scene{session.level.scene, effects::SceneGeometry(session.level.scene, session.world->terrain()),
-                effects::SceneLighting(32, 1024), effects::SceneTargets{}} {
-        scene.lighting.sky.sun_dir = glm::normalize(session.world->level().sun_direction);
-        scene.targets.resize(kW, kH);
-        ldr = effects::gl::Texture::create_2d("test.ldr", GL_RGBA8, kW, kH);
-        output = effects::gl::Framebuffer::create("test.output");
-        output.attach_colour(0, ldr);
-        output.check_complete();
-    }
-    game::ImageRGBA8 render(const sim::CameraView& view, bool with_fluid) {
-        const effects::Camera camera = effects::make_camera(view, float(kW) / float(kH));
-        effects::FrameContext frame{*session.world, camera, scene, {output.id(), kW, kH}, 0.0};
-        for (effects::Pass* p : std::initializer_list<effects::Pass*>{&environment, &shadow, &sky, &opaque, &copy, &water})
-            p->render(frame);
-        if (with_fluid) fluid.render(frame);
-        tonemap.render(frame);
-        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-        return game::read_framebuffer_rgba8(output.id(), kW, kH);
-    }
-
-    game::GameSession session;
-    effects::SceneResources scene;
-    effects::EnvironmentPass environment;
-    effects::ShadowPass shadow;
-    effects::SkyOcclusionPass sky;
-    effects::OpaquePass opaque;
-    effects::SceneCopyPass copy;
-    effects::WaterPass water;
-    effects::FluidPass fluid;
-    effects::TonemapPass tonemap;
-    effects::gl::Texture ldr;
-    effects::gl::Framebuffer output;
-};
-
 // 2.6 m from the tank's centre, off to the side of the pier's axis, at the liquid's
 // middle height, so the horizon runs through the liquid.
 sim::CameraView through_the_tank() {
@@ -336,8 +261,8 @@ sim::CameraView through_the_tank() {
 }
 
 TEST_F(FluidCloseUpTest, ThroughTheTankAtTheHarbourMatchesItsGolden) {
-    HarbourStage stage;
-    sim::World& world = *stage.session.world;
+    RenderStage stage("harbour", {.width = 640, .height = 360, .passes = kTankFrame});
+    sim::World& world = stage.world();
     // A stone dropped into the tank; 40 ticks on, it has bounced off the floor and the
     // liquid it threw up stands around it.
     const glm::vec3 spot = world.level().tank_spot;
@@ -345,8 +270,8 @@ TEST_F(FluidCloseUpTest, ThroughTheTankAtTheHarbourMatchesItsGolden) {
                                            {0, 0, 0});
     for (int t = 0; t < 40; ++t) world.step({});
     EXPECT_GE(world.get<sim::FluidTank>().fluid().splash_count(), 5u);  // 15 here
-    const game::ImageRGBA8 bare = stage.render(through_the_tank(), false);
-    const game::ImageRGBA8 through = stage.render(through_the_tank(), true);
+    const game::ImageRGBA8 bare = stage.render(through_the_tank(), {.skip = kFluidPass});
+    const game::ImageRGBA8 through = stage.render(through_the_tank());
     maybe_write_png("closeup_bare", bare);
     maybe_write_png("closeup_through", through);
 
@@ -355,8 +280,8 @@ TEST_F(FluidCloseUpTest, ThroughTheTankAtTheHarbourMatchesItsGolden) {
     // green and blue. The liquid is a sizeable share of the frame.
     const int w = through.width, h = through.height;
     std::vector<float> front(size_t(w) * size_t(h));
-    glGetTextureImage(stage.fluid.body_front().id(), 0, GL_RED, GL_FLOAT, GLsizei(front.size() * sizeof(float)),
-                      front.data());
+    glGetTextureImage(stage.pass<effects::FluidPass>().body_front().id(), 0, GL_RED, GL_FLOAT,
+                      GLsizei(front.size() * sizeof(float)), front.data());
     glm::vec3 tinted_sum(0.0f), bare_sum(0.0f);
     int liquid = 0, changed = 0;
     for (int y = 0; y < h; ++y)
