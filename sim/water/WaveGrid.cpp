@@ -7,19 +7,13 @@
 #include <string>
 
 #include "sim/core/Hash.h"
+#include "sim/water/WaveRow.h"
 
 namespace sim {
 
 namespace {
 
 constexpr float kPi = 3.14159265f;
-// Heights this small are flushed to 0: the scheme's numerical fronts and long damped
-// tails would otherwise fill the grid with subnormal floats, which x86 handles ~100x
-// slower (and the sim must not change the FPU's flush modes).
-constexpr float kFlush_m = 1e-30f;
-
-inline float flushed(float y) { return std::fabs(y) < kFlush_m ? 0.0f : y; }
-
 std::string num(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g", v);
@@ -95,18 +89,12 @@ void WaveGrid::step_rows(size_t row_begin, size_t row_end) {
     //        = c sum + (1 + keep - pull - k c) y[n] - keep y[n-1]
     const float c = c_, keep = damp_;
     const float w3 = 1.0f + keep - pull_ - 3.0f * c, w4 = 1.0f + keep - pull_ - 4.0f * c;
+    const WaveRowCode code = wave_row_has_avx2() ? WaveRowCode::kAvx2 : WaveRowCode::kBaseline;
     for (size_t j = row_begin; j < row_end; ++j) {
         const size_t row = j * n;
         if (!row_general_[j]) {
             // Interior row with no land near: the tight loop, edges k = 3.
-            const float* __restrict r = y + row;
-            const float* __restrict up = r - n;
-            const float* __restrict dn = r + n;
-            float* __restrict o = out + row;
-            o[0] = flushed(c * (r[1] + (up[0] + dn[0])) + w3 * r[0] - keep * o[0]);
-            for (size_t i = 1; i + 1 < n; ++i)
-                o[i] = flushed(c * ((r[i - 1] + r[i + 1]) + (up[i] + dn[i])) + w4 * r[i] - keep * o[i]);
-            o[n - 1] = flushed(c * (r[n - 2] + (up[n - 1] + dn[n - 1])) + w3 * r[n - 1] - keep * o[n - 1]);
+            step_wave_row(y + row - n, y + row, y + row + n, out + row, n, {c, w3, w4, keep}, code);
             continue;
         }
         for (size_t i = 0; i < n; ++i) {
