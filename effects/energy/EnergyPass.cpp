@@ -54,12 +54,6 @@ void EnergyPass::register_params(ParamRegistry& params) {
     params.add("energy", "bloom", &look_.bloom, 0.0f, 4.0f);
 }
 
-void EnergyPass::upload(gl::Buffer& buffer, std::string_view label, std::span<const std::byte> bytes) {
-    const GLsizeiptr size = std::max<GLsizeiptr>(GLsizeiptr(bytes.size()), 16);
-    if (buffer.id() == 0 || buffer.size() < size) buffer = gl::Buffer::create(label, std::max(size, 2 * buffer.size()));
-    if (!bytes.empty()) buffer.update(0, bytes);
-}
-
 void EnergyPass::render(const FrameContext& frame) {
     gather_energy_view(frame.world, view_);
     draw(frame, view_.segments);
@@ -153,9 +147,9 @@ void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int 
     if (tiles_.tiles.empty()) return;
     std::vector<SegmentGpu> gpu(segments.size());
     for (size_t i = 0; i < segments.size(); ++i) gpu[i] = segment_gpu(segments[i], glm::dvec3(camera.eye));
-    upload(segments_, "energy.segments", std::as_bytes(std::span(gpu)));
-    upload(tile_list_, "energy.tiles", std::as_bytes(std::span(tiles_.tiles)));
-    upload(tile_segments_, "energy.tile_segments", std::as_bytes(std::span(tiles_.indices)));
+    gl::upload_growing(segments_, "energy.segments", std::as_bytes(std::span(gpu)));
+    gl::upload_growing(tile_list_, "energy.tiles", std::as_bytes(std::span(tiles_.tiles)));
+    gl::upload_growing(tile_segments_, "energy.tile_segments", std::as_bytes(std::span(tiles_.indices)));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSegmentBinding, segments_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tile_list_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileSegmentBinding, tile_segments_.id());

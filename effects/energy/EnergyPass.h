@@ -55,8 +55,6 @@ public:
 
 private:
     void bloom(const FrameContext& frame, std::span<const sim::EnergySegment> segments);
-    // Uploads into a buffer that grows as needed.
-    static void upload(gl::Buffer& buffer, std::string_view label, std::span<const std::byte> bytes);
 
     gl::Program program_, blur_, add_;
     gl::Texture bloom_a_, bloom_b_;  // quarter resolution: the glow, and the half-blurred glow
