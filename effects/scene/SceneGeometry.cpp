@@ -16,6 +16,12 @@ namespace effects {
 
 namespace {
 constexpr int kMaxRoads = 16;  // size of u_roads in mesh.frag.glsl
+
+// The model matrix, and the normal matrix once per draw on the CPU, not per vertex on the GPU.
+void place(const gl::Program& p, const glm::mat4& model, bool depth_only) {
+    p.set("u_model", model);
+    if (!depth_only) p.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model))));
+}
 }
 
 SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
@@ -50,25 +56,19 @@ void SceneGeometry::apply_ground(const gl::Program& p) const {
 
 void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
     for (const PropInstance& inst : desc_.props) {
-        p.set("u_model", inst.transform);
-        if (!depth_only) p.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(inst.transform))));
+        place(p, inst.transform, depth_only);
         models_[size_t(inst.model)]->draw(p, depth_only);
     }
 }
 
 void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool depth_only) const {
-    // The normal matrix once per draw on the CPU, not per vertex on the GPU.
-    auto place = [&](const glm::mat4& model) {
-        p.set("u_model", model);
-        if (!depth_only) p.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model))));
-    };
     auto material = [&](int surface, glm::vec4 tint) {
         if (depth_only) return;
         p.set("u_surface", surface);
         p.set("u_tint", tint);
     };
     material(1, glm::vec4(1.0f));
-    place(glm::mat4(1.0f));
+    place(p, glm::mat4(1.0f), depth_only);
     terrain_.draw(p, depth_only);
 
     material(0, glm::vec4(1.0f));
@@ -80,23 +80,23 @@ void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool dep
         const glm::mat4 body = car.pose().matrix();
         models_[size_t(desc_.car_model)]->draw_parts(p, depth_only, [&](const std::string& mesh, glm::vec3 centre) {
             const bool wheel = mesh.starts_with("wheel_") || mesh.starts_with("hubcap_");
-            if (!wheel) return place(body);
+            if (!wheel) return place(p, body, depth_only);
             const bool front = mesh.size() >= 2 && mesh[mesh.size() - 2] == 'f';
             glm::mat4 m = glm::translate(body, centre);
             if (front) m = glm::rotate(m, car.steer_rad(), glm::vec3(0.0f, 1.0f, 0.0f));
             m = glm::rotate(m, -car.wheel_spin_rad(), glm::vec3(0.0f, 0.0f, 1.0f));  // rolling forward
-            place(glm::translate(m, -centre));
+            place(p, glm::translate(m, -centre), depth_only);
         });
     }
     if (desc_.boat_model >= 0) {
-        place(world.get<sim::Boat>().pose().matrix());
+        place(p, world.get<sim::Boat>().pose().matrix(), depth_only);
         models_[size_t(desc_.boat_model)]->draw(p, depth_only);
     }
     for (const sim::ThrownObject& o : world.get<sim::ThrownObjects>().objects()) {
         // Stones grey, floats bright orange so they read on the water.
         material(0, o.sinks() ? glm::vec4(0.18f, 0.18f, 0.17f, 1.0f) : glm::vec4(0.9f, 0.28f, 0.04f, 1.0f));
         glm::mat4 m = glm::translate(glm::mat4(1.0f), o.position) * glm::scale(glm::mat4(1.0f), glm::vec3(o.radius_m));
-        place(m);
+        place(p, m, depth_only);
         sphere_.draw(p, depth_only);
     }
 }
