@@ -1,5 +1,8 @@
 #include "effects/Renderer.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 #include "effects/gl/DebugGroup.h"
@@ -20,10 +23,22 @@ void Renderer::set_timing(gl::TimingMode mode) {
     if (mode != timer_->mode()) timer_ = std::make_unique<gl::PassTimer>(mode);
 }
 
+void Renderer::set_quality(Quality quality) {
+    quality_ = quality;
+    settings_ = effects::quality_settings(quality);
+    set_render_scale(settings_.render_scale);
+}
+
+void Renderer::set_render_scale(float scale) {
+    render_scale_ = std::clamp(std::isfinite(scale) ? scale : 1.0f, kMinRenderScale, 1.0f);
+}
+
 void Renderer::render(const sim::World& world, RenderOutput output) {
-    if (output.width != resources_.targets.width() || output.height != resources_.targets.height()) {
-        resources_.targets.resize(output.width, output.height);
-        for (auto& p : passes_) p->resize(output.width, output.height);
+    const int width = std::max(1, int(std::lround(float(output.width) * render_scale_)));
+    const int height = std::max(1, int(std::lround(float(output.height) * render_scale_)));
+    if (width != resources_.targets.width() || height != resources_.targets.height()) {
+        resources_.targets.resize(width, height);
+        for (auto& p : passes_) p->resize(width, height);
     }
     // Rain brings cloud: the sun weakens and the sky greys.
     float rain = world.get<sim::Player>().rain_intensity();

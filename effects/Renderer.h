@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "effects/Quality.h"
 #include "effects/gl/PassTimer.h"
 #include "effects/scene/Pass.h"
 
@@ -21,6 +22,16 @@ public:
 
     void render(const sim::World& world, RenderOutput output);
 
+    // The preset's settings; its render scale becomes the current one.
+    void set_quality(Quality quality);
+    Quality quality() const { return quality_; }
+    const QualitySettings& quality_settings() const { return settings_; }
+    // The 3D scene renders at this fraction of the output's size (clamped to
+    // [kMinRenderScale, 1]) and is upscaled to it; the HUD stays at the output's.
+    void set_render_scale(float scale);
+    float render_scale() const { return render_scale_; }
+    static constexpr float kMinRenderScale = 0.25f;
+
     const SceneTargets& targets() const { return resources_.targets; }
     ParamRegistry& params() { return params_; }
     const std::vector<gl::PassTime>& pass_times() const { return timer_->results(); }
@@ -35,6 +46,9 @@ private:
     std::unique_ptr<gl::PassTimer> timer_;
     ParamRegistry params_;
     glm::vec3 sun_dir_;
+    Quality quality_ = Quality::High;
+    QualitySettings settings_ = effects::quality_settings(Quality::High);
+    float render_scale_ = 1.0f;
 };
 
 // The passes in frame order (effects/PassList.cpp).

@@ -1,0 +1,43 @@
+#include "effects/Quality.h"
+
+namespace effects {
+
+QualitySettings quality_settings(Quality quality) {
+    QualitySettings s;
+    switch (quality) {
+        case Quality::High: break;
+        case Quality::Medium:
+            s.render_scale = 0.75f;
+            s.shadow_map_size = 1024;
+            s.shadow_taps = 4;
+            s.fluid_smoothing_max = 2;
+            s.dust_max_shells = 8;
+            break;
+        case Quality::Low:
+            s.render_scale = 0.5f;
+            s.shadow_map_size = 512;
+            s.shadow_taps = 1;
+            s.fluid_smoothing_max = 1;
+            s.bloom = false;
+            s.dust_max_shells = 4;
+            break;
+    }
+    return s;
+}
+
+std::string_view quality_name(Quality quality) {
+    switch (quality) {
+        case Quality::Low: return "low";
+        case Quality::Medium: return "medium";
+        case Quality::High: return "high";
+    }
+    return "high";
+}
+
+std::optional<Quality> parse_quality(std::string_view name) {
+    for (Quality q : {Quality::Low, Quality::Medium, Quality::High})
+        if (name == quality_name(q)) return q;
+    return std::nullopt;
+}
+
+}  // namespace effects
