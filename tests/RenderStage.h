@@ -127,7 +127,7 @@ public:
         return effects::make_camera(view, float(width_) / float(height_));
     }
     effects::FrameContext context(const effects::Camera& camera, double time_s = 0.0) {
-        return {world(), camera, scene_, output_.output(), time_s};
+        return {world(), camera, scene_, output_.output(), time_s, effects::capture_poses(world())};
     }
 
     // Runs the held passes, less the frame's skipped ones, in the game's order.

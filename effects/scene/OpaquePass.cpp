@@ -42,7 +42,7 @@ void OpaquePass::render(const FrameContext& frame) {
         p->set("u_eye", frame.camera.eye);
     }
     frame.scene.geometry.apply_ground(ground_);
-    frame.scene.geometry.draw(objects_, ground_, frame.world, SceneGeometry::Use::Shading,
+    frame.scene.geometry.draw(objects_, ground_, frame.poses, SceneGeometry::Use::Shading,
                               Frustum(frame.camera.view_proj));
     glDisable(GL_CULL_FACE);
 
