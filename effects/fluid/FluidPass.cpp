@@ -201,7 +201,8 @@ const gl::Texture* FluidPass::smooth(const gl::Texture& source, gl::Texture* pin
     p->set("u_sigma_depth", 2.0f * std::sqrt(2.0f) * radius);
     p->set("u_band", look_.narrow_band_radii * radius);
     const gl::Texture* in = &source;
-    for (int it = 0; it < smoothing_.iterations; ++it) {
+    const int iterations = std::min(smoothing_.iterations, frame.scene.quality.fluid_smoothing_max);
+    for (int it = 0; it < iterations; ++it) {
         gl::Texture* out = &ping_pong[it % 2];
         smooth_fbo_.attach_colour(0, *out);
         smooth_fbo_.bind();
