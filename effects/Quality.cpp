@@ -12,6 +12,7 @@ QualitySettings quality_settings(Quality quality) {
             s.shadow_taps = 4;
             s.env_reflection = false;
             s.fluid_smoothing_max = 2;
+            s.fluid_kernel_max = 5;
             s.dust_max_shells = 8;
             break;
         case Quality::Low:
@@ -21,6 +22,7 @@ QualitySettings quality_settings(Quality quality) {
             s.env_reflection = false;
             s.ground_detail = false;
             s.fluid_smoothing_max = 1;
+            s.fluid_kernel_max = 3;
             s.bloom = false;
             s.dust_max_shells = 4;
             break;

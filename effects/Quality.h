@@ -17,6 +17,7 @@ struct QualitySettings {
     bool env_reflection = true;    // opaque surfaces reflect the environment cube (else its ambient)
     bool ground_detail = true;     // the ground's fine noise octave
     int fluid_smoothing_max = 64;  // cap on the tank's depth smoothing iterations
+    int fluid_kernel_max = 64;     // and on its kernel's width in pixels (odd)
     bool bloom = true;             // the energy glow's bloom
     int dust_max_shells = 12;      // shells per dusty prop up close
     bool operator==(const QualitySettings&) const = default;
