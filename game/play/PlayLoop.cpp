@@ -67,7 +67,9 @@ void PlayLoop::run(const LoopHooks& hooks) {
     while (!screen_.should_close()) {
         const Screen::Size size = screen_.size();
         const bool minimised = size.width <= 0 || size.height <= 0;
-        const bool was_idle = paused_ || minimised || (options_.pause_when_unfocused && !screen_.focused());
+        // Paused, minimised, unfocused, or a replay at its end: nothing changes on screen.
+        const bool was_idle =
+            paused_ || minimised || input_ended || (options_.pause_when_unfocused && !screen_.focused());
         // Idle with its frame shown (or nothing to show): sleep until something happens.
         screen_.handle_events(was_idle && (idle_frame_shown || minimised) ? kIdleWaitSeconds : 0.0);
         for (int key : screen_.take_key_presses()) on_key_press(key, keyboard_drives);
@@ -78,13 +80,14 @@ void PlayLoop::run(const LoopHooks& hooks) {
         } else {
             input_.set_down(input_from_keys([this](int key) { return screen_.key_down(key); }));
         }
-        const bool idle = paused_ || minimised || (options_.pause_when_unfocused && !screen_.focused());
+        const bool idle =
+            paused_ || minimised || input_ended || (options_.pause_when_unfocused && !screen_.focused());
 
         const auto now = Clock::now();
         const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(now - last);
         last = now;
         FrameRecord record;
-        if (idle || input_ended || first_frame) {
+        if (idle || first_frame) {
             clock.reset();
             input_.clear();
         } else {
