@@ -35,9 +35,11 @@ void PassTimer::frame_begin() {
     if (mode_ == TimingMode::Sampled) {
         frame_names_.clear();
         sample_ms_.reset();
-        // The first frame measures its first pass (begin() picks it).
-        sample_name_ = last_frame_names_.empty() ? std::string()
-                                                 : last_frame_names_[frame_number_ % last_frame_names_.size()];
+        // The first frame only lists the passes: its times are mostly the driver
+        // compiling shaders, and a pass measured once a round would show them for long.
+        sample_name_ = last_frame_names_.empty()
+                           ? std::string()
+                           : last_frame_names_[(frame_number_ - 1) % last_frame_names_.size()];
         return;
     }
     FrameQueries& frame = frames_[frame_number_ % frames_.size()];
@@ -56,8 +58,7 @@ void PassTimer::begin(std::string_view name) {
     if (mode_ == TimingMode::Sampled) {
         if (std::find(frame_names_.begin(), frame_names_.end(), name) == frame_names_.end())
             frame_names_.emplace_back(name);
-        if (sample_name_.empty()) sample_name_ = name;
-        sampling_ = name == sample_name_;
+        sampling_ = !sample_name_.empty() && name == sample_name_;
         if (!sampling_) return;
     }
     if (mode_ == TimingMode::Profile || mode_ == TimingMode::Sampled) {

@@ -29,7 +29,8 @@ struct PassTime {
 //   { auto t = timer.scope("water"); ... }
 //   timer.frame_end();
 // Sampled mode measures every run of one pass name per frame, the next name in the
-// last frame's order each frame, so a list of N passes is measured once every N frames.
+// last frame's order each frame, so a list of N passes is measured once every N frames
+// (from the second frame on: the first one's times are mostly shader compiles).
 // Passes do not nest (GL_TIME_ELAPSED queries cannot). Misuse (begin without
 // frame_begin, nested begin, end without begin) throws std::logic_error.
 class PassTimer {
