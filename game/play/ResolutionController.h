@@ -20,7 +20,7 @@ public:
         float max_scale = 1.0f;
         float start_scale = 0.75f;     // medium's
         float step = 0.05f;            // scales are multiples of this
-        size_t down_window = 8;        // frames judged for a step down (the worst one ignored)
+        size_t down_window = 6;        // frames judged for a step down (the worst one ignored)
         size_t up_frames = 45;         // frames in a row well under the budget for a step up
     };
 
