@@ -12,7 +12,8 @@ namespace effects {
 
 Renderer::Renderer(const SceneDesc& scene, const sim::World& world, RendererOptions options)
     : resources_{scene, SceneGeometry(scene, world.terrain()),
-                 SceneLighting(options.environment_size, options.shadow_map_size), SceneTargets{}},
+                 SceneLighting(options.environment_size, effects::quality_settings(Quality::High).shadow_map_size),
+                 SceneTargets{}, effects::quality_settings(Quality::High)},
       passes_(make_pass_list()),
       timer_(std::make_unique<gl::PassTimer>(options.timing)),
       sun_dir_(glm::normalize(world.level().sun_direction)) {
@@ -25,8 +26,8 @@ void Renderer::set_timing(gl::TimingMode mode) {
 
 void Renderer::set_quality(Quality quality) {
     quality_ = quality;
-    settings_ = effects::quality_settings(quality);
-    set_render_scale(settings_.render_scale);
+    resources_.quality = effects::quality_settings(quality);
+    set_render_scale(resources_.quality.render_scale);
 }
 
 void Renderer::set_render_scale(float scale) {

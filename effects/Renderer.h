@@ -11,7 +11,6 @@
 namespace effects {
 
 struct RendererOptions {
-    int shadow_map_size = 1024;
     int environment_size = 64;
     gl::TimingMode timing = gl::TimingMode::GpuQueries;
 };
@@ -25,7 +24,7 @@ public:
     // The preset's settings; its render scale becomes the current one.
     void set_quality(Quality quality);
     Quality quality() const { return quality_; }
-    const QualitySettings& quality_settings() const { return settings_; }
+    const QualitySettings& quality_settings() const { return resources_.quality; }
     // The 3D scene renders at this fraction of the output's size (clamped to
     // [kMinRenderScale, 1]) and is upscaled to it; the HUD stays at the output's.
     void set_render_scale(float scale);
@@ -47,7 +46,6 @@ private:
     ParamRegistry params_;
     glm::vec3 sun_dir_;
     Quality quality_ = Quality::High;
-    QualitySettings settings_ = effects::quality_settings(Quality::High);
     float render_scale_ = 1.0f;
 };
 

@@ -71,8 +71,15 @@ inline StagePass stage_pass_of(const effects::Pass& p) {
 struct StageOptions {
     int width = 0, height = 0;
     StagePasses passes = kEveryPass;  // the passes the stage holds
-    int environment_size = 32, shadow_map_size = 1024;  // as effects::RendererOptions
+    int environment_size = 32, shadow_map_size = 1024;  // the high preset's shadow map
 };
+
+// The high preset, with the stage's shadow map size.
+inline effects::QualitySettings stage_quality(const StageOptions& options) {
+    effects::QualitySettings q = effects::quality_settings(effects::Quality::High);
+    q.shadow_map_size = options.shadow_map_size;
+    return q;
+}
 
 // What one frame does differently from the stage's default.
 struct StageFrame {
@@ -96,7 +103,8 @@ public:
           height_(options.height),
           session_(std::move(session)),
           scene_{session_.level.scene, effects::SceneGeometry(session_.level.scene, session_.world->terrain()),
-                 effects::SceneLighting(options.environment_size, options.shadow_map_size), effects::SceneTargets{}},
+                 effects::SceneLighting(options.environment_size, options.shadow_map_size), effects::SceneTargets{},
+                 stage_quality(options)},
           output_(width_, height_) {
         // The level's sun, as the game's renderer sets it; its radiance and the sky's stay
         // at their clear-day defaults (the renderer dims them in rain).

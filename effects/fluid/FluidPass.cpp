@@ -8,6 +8,9 @@
 
 #include "effects/gl/DebugGroup.h"
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/scene/Frustum.h"
+#include "effects/scene/ScreenRect.h"
+#include "sim/fluid/FluidTank.h"
 
 namespace effects {
 
@@ -68,7 +71,31 @@ void FluidPass::set_smoothing(const FluidSmoothing& smoothing) {
 }
 
 void FluidPass::render(const FrameContext& frame) {
-    if (!gather_fluid_view(frame.world, view_)) return;
+    const sim::FluidTank* tank = frame.world.find<sim::FluidTank>();
+    if (!tank) return;
+    // Out of view, the ellipsoids are not worth building: skip on the bounds of
+    // everything they can reach (each stays within 11 particle radii of its particle:
+    // centre smoothing moves it at most the 8-radius neighbourhood, stretch keeps its
+    // axes under 2.6 radii) and of the glass, up to twice its height.
+    const float r = tank->fluid().params().particle_radius_m;
+    glm::vec3 lo(0.0f), hi(tank->inner_size() * glm::vec3(1.0f, 2.0f, 1.0f));
+    for (const glm::vec3& p : tank->fluid().positions()) {
+        lo = glm::min(lo, p - 11.0f * r);
+        hi = glm::max(hi, p + 11.0f * r);
+    }
+    glm::vec3 wlo(1e30f), whi(-1e30f);
+    const glm::mat4 to_world = tank->tank_to_world();
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec3 w(to_world * glm::vec4((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z, 1.0f));
+        wlo = glm::min(wlo, w);
+        whi = glm::max(whi, w);
+    }
+    if (Frustum(frame.camera.view_proj).outside(wlo, whi)) {
+        rect_ = glm::ivec4(0);
+        times_ = {};
+        return;
+    }
+    gather_fluid_view(frame.world, view_);
     if (!smoothing_set_) {  // the level's settings, once: the debug panel may change them after
         const sim::FluidTankDesc& d = frame.world.level().fluid;
         FluidSmoothing s;
@@ -136,22 +163,8 @@ glm::ivec4 FluidPass::screen_rect(const FrameContext& frame, const FluidView& vi
             lo = glm::min(lo, e.centre - r);
             hi = glm::max(hi, e.centre + r);
         }
-    const int w = width_, h = height_;
     if (lo.x > hi.x) return glm::ivec4(0);
-    glm::vec2 pmin(1e30f), pmax(-1e30f);
-    for (int k = 0; k < 8; ++k) {
-        glm::vec3 c((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
-        glm::vec4 clip = frame.camera.view_proj * glm::vec4(c, 1.0f);
-        if (clip.w < frame.camera.near_m) return {0, 0, w, h};  // reaches behind the eye: all of it
-        glm::vec2 px = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(float(w), float(h));
-        pmin = glm::min(pmin, px);
-        pmax = glm::max(pmax, px);
-    }
-    glm::ivec4 r(int(std::floor(pmin.x)) - margin, int(std::floor(pmin.y)) - margin, int(std::ceil(pmax.x)) + margin,
-                 int(std::ceil(pmax.y)) + margin);
-    r = glm::clamp(r, glm::ivec4(0), glm::ivec4(w, h, w, h));
-    if (r.z <= r.x || r.w <= r.y) return glm::ivec4(0);
-    return r;
+    return screen_rect_of_box(frame.camera.view_proj, frame.camera.near_m, lo, hi, width_, height_, margin);
 }
 
 void FluidPass::upload(gl::Buffer& buffer, const std::vector<sim::FluidEllipsoid>& ellipsoids) {

@@ -16,8 +16,11 @@ void make_fluid_view(const sim::ParticleFluid& fluid, const glm::mat4& tank_to_w
     out.tank_to_world = tank_to_world;
     out.tank_size = tank_size;
     out.particle_radius_m = fluid.params().particle_radius_m;
-    std::vector<sim::FluidEllipsoid> all;
-    sim::anisotropic_kernels(fluid.positions(), anisotropy_for(out.particle_radius_m), all);
+    if (fluid.positions() != out.kernel_positions || out.kernels.size() != fluid.positions().size()) {
+        sim::anisotropic_kernels(fluid.positions(), anisotropy_for(out.particle_radius_m), out.kernels);
+        out.kernel_positions = fluid.positions();
+    }
+    const std::vector<sim::FluidEllipsoid>& all = out.kernels;
     out.body.clear();
     out.splash.clear();
     const glm::mat3 rot(tank_to_world);

@@ -21,6 +21,10 @@ struct FluidView {
     float particle_radius_m = 0.03f;
     std::vector<sim::FluidEllipsoid> body, splash;
     bool empty() const { return body.empty() && splash.empty(); }
+    // The last kernels (tank frame) and the positions they were built from: a resting
+    // liquid, or several frames between two ticks, reuse them.
+    std::vector<glm::vec3> kernel_positions;
+    std::vector<sim::FluidEllipsoid> kernels;
 };
 
 // The anisotropy settings for a fluid of this particle radius (neighbourhood 2 h).

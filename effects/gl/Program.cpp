@@ -116,12 +116,21 @@ GLenum Program::stage_from_path(std::string_view path) {
                                 ": no stage suffix (.vert .frag .comp .geom .tesc .tese)");
 }
 
-Program Program::from_files(std::string_view label, const std::vector<std::string_view>& paths) {
+Program Program::from_files(std::string_view label, const std::vector<std::string_view>& paths,
+                            const std::vector<std::string>& defines) {
     std::vector<StageSource> stages;
     std::vector<std::string> texts(paths.size());  // owns what the stages view
     for (size_t i = 0; i < paths.size(); ++i) {
         try {
             texts[i] = shader_text(paths[i]);
+            if (!defines.empty()) {
+                const size_t version = texts[i].rfind("#version", 0) == 0 ? texts[i].find('\n') : std::string::npos;
+                if (version == std::string::npos)
+                    throw std::runtime_error("shaders/" + std::string(paths[i]) + ": defines need a #version first line");
+                std::string lines;
+                for (const std::string& d : defines) lines += "#define " + d + "\n";
+                texts[i].insert(version + 1, lines + "#line 2\n");
+            }
         } catch (const std::exception& e) {
             throw std::runtime_error("program '" + std::string(label) + "': " + e.what());
         }

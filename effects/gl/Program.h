@@ -33,7 +33,11 @@ public:
 
     // Embedded shaders by path under shaders/, stage from the suffix:
     // "scene/mesh.vert.glsl" -> vertex (.vert .frag .comp .geom .tesc .tese).
-    static Program from_files(std::string_view label, const std::vector<std::string_view>& paths);
+    // `defines` ("NAME" or "NAME VALUE") go in as #define lines after #version: one
+    // source, variants compiled for what is known before the frame (a preset's choices)
+    // instead of branches, of which a CPU rasteriser runs both sides.
+    static Program from_files(std::string_view label, const std::vector<std::string_view>& paths,
+                              const std::vector<std::string>& defines = {});
     static Program from_sources(std::string_view label, const std::vector<StageSource>& stages);
 
     // Throws std::invalid_argument naming the path if it has no stage suffix.

@@ -1,4 +1,5 @@
 #pragma once
+#include "effects/Quality.h"
 #include "effects/scene/Camera.h"
 #include "effects/scene/SceneGeometry.h"
 #include "effects/scene/SceneLighting.h"
@@ -13,6 +14,7 @@ struct SceneResources {
     SceneGeometry geometry;
     SceneLighting lighting;
     SceneTargets targets;
+    QualitySettings quality{};  // the renderer's preset; passes follow it frame by frame
 };
 
 // Where the frame ends up: the window's framebuffer (0) or a capture target.

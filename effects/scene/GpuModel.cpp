@@ -18,7 +18,7 @@ GpuModel::GpuModel(const Model& model) : name_(model.name) {
             lo = glm::min(lo, v.position);
             hi = glm::max(hi, v.position);
         }
-        ranges_.push_back({GLsizei(m.indices.size()), idx.size(), m.roughness, m.metallic, m.emissive, m.name, 0.5f * (lo + hi)});
+        ranges_.push_back({GLsizei(m.indices.size()), idx.size(), m.roughness, m.metallic, m.emissive, m.name, 0.5f * (lo + hi), lo, hi});
         verts.insert(verts.end(), m.vertices.begin(), m.vertices.end());
         for (uint32_t i : m.indices) idx.push_back(base + i);
     }
@@ -35,6 +35,16 @@ GpuModel::GpuModel(const Model& model) : name_(model.name) {
 void GpuModel::draw(const gl::Program& program, bool depth_only) const {
     vao_.bind();
     for (const Range& r : ranges_) draw_range(program, depth_only, r);
+}
+
+void GpuModel::draw_visible(const gl::Program& program, bool depth_only, const Frustum& view,
+                            const glm::mat4& model_to_world, bool skip_level_meshes) const {
+    vao_.bind();
+    for (const Range& r : ranges_) {
+        if (skip_level_meshes && r.hi.y - r.lo.y < 1e-3f) continue;
+        const glm::vec3 a(model_to_world * glm::vec4(r.lo, 1.0f)), b(model_to_world * glm::vec4(r.hi, 1.0f));
+        if (!view.outside(glm::min(a, b), glm::max(a, b))) draw_range(program, depth_only, r);
+    }
 }
 
 void GpuModel::draw_range(const gl::Program& program, bool depth_only, const Range& r) const {

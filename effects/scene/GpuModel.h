@@ -8,6 +8,7 @@
 #include "effects/gl/Buffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/VertexArray.h"
+#include "effects/scene/Frustum.h"
 #include "effects/scene/SceneDesc.h"
 
 namespace effects {
@@ -18,6 +19,11 @@ public:
 
     // Draws every mesh, setting the material uniforms unless depth_only.
     void draw(const gl::Program& program, bool depth_only) const;
+    // Only the meshes whose bounds (model space, placed by `model_to_world`, which must
+    // keep axes axis-aligned: a translation and scale) `view` can see; with
+    // `skip_level_meshes`, not those whose bounds are flat and level either.
+    void draw_visible(const gl::Program& program, bool depth_only, const Frustum& view,
+                      const glm::mat4& model_to_world, bool skip_level_meshes = false) const;
     // The same, with each mesh placed by `place(mesh_name, mesh_centre)` first (moving
     // parts: a car's wheels).
     template <class Place>
@@ -38,6 +44,7 @@ private:
         glm::vec3 emissive;
         std::string name;
         glm::vec3 centre;  // of the mesh's bounding box, model space
+        glm::vec3 lo, hi;  // the bounding box
     };
     void draw_range(const gl::Program& program, bool depth_only, const Range& r) const;
     std::string name_;

@@ -1,14 +1,25 @@
 #include "effects/scene/OpaquePass.h"
 
+#include <string>
+#include <vector>
+
 #include "effects/gl/EmptyVertexArray.h"
 
 namespace effects {
 
 OpaquePass::OpaquePass()
-    : mesh_(gl::Program::from_files("opaque.mesh", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"})),
-      sky_(gl::Program::from_files("opaque.sky", {"common/fullscreen.vert.glsl", "scene/sky.frag.glsl"})) {}
+    : sky_(gl::Program::from_files("opaque.sky", {"common/fullscreen.vert.glsl", "scene/sky.frag.glsl"})) {}
+
+void OpaquePass::build_mesh_programs(int shadow_taps) {
+    const std::vector<std::string_view> files = {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"};
+    const std::string taps = "SHADOW_TAPS " + std::to_string(shadow_taps);
+    objects_ = gl::Program::from_files("opaque.objects", files, {taps});
+    ground_ = gl::Program::from_files("opaque.ground", files, {taps, "GROUND"});
+    shadow_taps_ = shadow_taps;
+}
 
 void OpaquePass::render(const FrameContext& frame) {
+    if (shadow_taps_ != frame.scene.quality.shadow_taps) build_mesh_programs(frame.scene.quality.shadow_taps);
     SceneTargets& t = frame.scene.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
     glViewport(0, 0, t.width(), t.height());
@@ -23,12 +34,14 @@ void OpaquePass::render(const FrameContext& frame) {
 
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    mesh_.use();
-    frame.scene.lighting.apply(mesh_);
-    frame.scene.geometry.apply_ground(mesh_);
-    mesh_.set("u_view_proj", frame.camera.view_proj);
-    mesh_.set("u_eye", frame.camera.eye);
-    frame.scene.geometry.draw(mesh_, frame.world, false);
+    for (const gl::Program* p : {&objects_, &ground_}) {
+        frame.scene.lighting.apply(*p);
+        p->set("u_view_proj", frame.camera.view_proj);
+        p->set("u_eye", frame.camera.eye);
+    }
+    frame.scene.geometry.apply_ground(ground_);
+    frame.scene.geometry.draw(objects_, ground_, frame.world, SceneGeometry::Use::Shading,
+                              Frustum(frame.camera.view_proj));
     glDisable(GL_CULL_FACE);
 
     // Sky last, only where nothing was drawn: the far plane passes GL_LEQUAL.

@@ -13,7 +13,11 @@ public:
     void render(const FrameContext& frame) override;
 
 private:
-    gl::Program mesh_, sky_;
+    // The mesh programs for a shadow filter (SHADOW_TAPS), rebuilt when the preset's changes.
+    void build_mesh_programs(int shadow_taps);
+
+    gl::Program objects_, ground_, sky_;
+    int shadow_taps_ = 0;
 };
 
 }  // namespace effects

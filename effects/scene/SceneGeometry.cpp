@@ -33,13 +33,17 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
     for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
     for (size_t i = 0; i < desc.props.size(); ++i) {
         const Model& m = desc.models[size_t(desc.props[i].model)];
+        glm::vec3 lo(0.0f), hi(0.0f);
         for (int c = 0; c < 8; ++c) {
             const glm::vec3 corner(c & 1 ? m.bounds_max.x : m.bounds_min.x, c & 2 ? m.bounds_max.y : m.bounds_min.y,
                                    c & 4 ? m.bounds_max.z : m.bounds_min.z);
             const glm::vec3 p(desc.props[i].transform * glm::vec4(corner, 1.0f));
-            props_min_ = i == 0 && c == 0 ? p : glm::min(props_min_, p);
-            props_max_ = i == 0 && c == 0 ? p : glm::max(props_max_, p);
+            lo = c == 0 ? p : glm::min(lo, p);
+            hi = c == 0 ? p : glm::max(hi, p);
         }
+        prop_bounds_.emplace_back(lo, hi);
+        props_min_ = i == 0 ? lo : glm::min(props_min_, lo);
+        props_max_ = i == 0 ? hi : glm::max(props_max_, hi);
     }
 }
 
@@ -61,18 +65,14 @@ void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
     }
 }
 
-void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool depth_only) const {
-    auto material = [&](int surface, glm::vec4 tint) {
-        if (depth_only) return;
-        p.set("u_surface", surface);
-        p.set("u_tint", tint);
+void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const sim::World& world, Use use,
+                         const Frustum& view) const {
+    const bool depth_only = use == Use::ShadowCasters;
+    auto material = [&](glm::vec4 tint) {
+        if (!depth_only) p.set("u_tint", tint);
     };
-    material(1, glm::vec4(1.0f));
-    place(p, glm::mat4(1.0f), depth_only);
-    terrain_.draw(p, depth_only);
-
-    material(0, glm::vec4(1.0f));
-    draw_props(p, depth_only);
+    p.use();
+    material(glm::vec4(1.0f));
     if (desc_.car_model >= 0) {
         // Wheels and hubcaps (meshes "wheel_fl", "hubcap_rr", ...) turn
         // about their axle (model z) and the front ones steer about their vertical.
@@ -93,12 +93,27 @@ void SceneGeometry::draw(const gl::Program& p, const sim::World& world, bool dep
         models_[size_t(desc_.boat_model)]->draw(p, depth_only);
     }
     for (const sim::ThrownObject& o : world.get<sim::ThrownObjects>().objects()) {
+        if (view.outside(o.position - o.radius_m, o.position + o.radius_m)) continue;
         // Stones grey, floats bright orange so they read on the water.
-        material(0, o.sinks() ? glm::vec4(0.18f, 0.18f, 0.17f, 1.0f) : glm::vec4(0.9f, 0.28f, 0.04f, 1.0f));
+        material(o.sinks() ? glm::vec4(0.18f, 0.18f, 0.17f, 1.0f) : glm::vec4(0.9f, 0.28f, 0.04f, 1.0f));
         glm::mat4 m = glm::translate(glm::mat4(1.0f), o.position) * glm::scale(glm::mat4(1.0f), glm::vec3(o.radius_m));
         place(p, m, depth_only);
         sphere_.draw(p, depth_only);
     }
+    material(glm::vec4(1.0f));
+    for (size_t i = 0; i < desc_.props.size(); ++i) {
+        if (view.outside(prop_bounds_[i].first, prop_bounds_[i].second)) continue;
+        const PropInstance& inst = desc_.props[i];
+        place(p, inst.transform, depth_only);
+        models_[size_t(inst.model)]->draw(p, depth_only);
+    }
+
+    // A level stretch of ground shades nothing: a ray rising from anything above the
+    // ground towards the sun can only meet the ground where it rises. Left out of
+    // the shadow map, it saves the raster of most of the map and cannot self-shadow.
+    ground.use();
+    place(ground, glm::mat4(1.0f), depth_only);
+    terrain_.draw_visible(ground, depth_only, view, glm::mat4(1.0f), depth_only);
 }
 
 }  // namespace effects

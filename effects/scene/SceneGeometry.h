@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "effects/gl/Program.h"
+#include "effects/scene/Frustum.h"
 #include "effects/scene/GpuModel.h"
 #include "effects/scene/SceneDesc.h"
 #include "sim/world/World.h"
@@ -15,8 +16,14 @@ class SceneGeometry {
 public:
     SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain);
 
-    // Sets u_model (and u_tint, u_surface unless depth_only) per draw.
-    void draw(const gl::Program& program, const sim::World& world, bool depth_only) const;
+    // What a draw is for: shading (the terrain through `ground`, the rest through
+    // `objects`; sets u_model, u_normal_matrix, u_tint and the materials per draw), or
+    // the sun's shadow casters (depth only, one program; level ground is left out).
+    enum class Use { Shading, ShadowCasters };
+    // What `view` can see, nearest kinds first (the vehicles, thrown objects, props,
+    // then the ground) so that the early depth test spares hidden pixels their shading.
+    void draw(const gl::Program& objects, const gl::Program& ground, const sim::World& world, Use use,
+              const Frustum& view) const;
     // The level's props alone: what stays put, for the top-down sky occlusion.
     void draw_props(const gl::Program& program, bool depth_only) const;
     // World-space bounds of the props (min = max = 0 without any).
@@ -32,6 +39,7 @@ private:
     std::vector<std::unique_ptr<GpuModel>> models_;
     GpuModel terrain_, sea_, sphere_;
     glm::vec3 props_min_{0.0f}, props_max_{0.0f};
+    std::vector<std::pair<glm::vec3, glm::vec3>> prop_bounds_;  // world space, per instance
 };
 
 }  // namespace effects

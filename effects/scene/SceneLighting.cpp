@@ -11,10 +11,7 @@ SceneLighting::SceneLighting(int env_size, int shadow_size, int sky_size)
     : env_levels_(gl::Texture::full_mip_levels(env_size, env_size)) {
     env_cube = gl::Texture::create_cube("sky.environment", GL_RGBA16F, env_size, env_levels_);
     env_cube.set_filter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
-    shadow_map = gl::Texture::create_2d("sun.shadow_map", GL_DEPTH_COMPONENT32F, shadow_size, shadow_size);
-    shadow_map.set_filter(GL_LINEAR, GL_LINEAR);
-    shadow_map.set_wrap(GL_CLAMP_TO_EDGE);
-    shadow_map.set_depth_compare(true, GL_LEQUAL);
+    resize_shadow_map(shadow_size);
     sky_map = gl::Texture::create_2d("sky.occlusion_map", GL_DEPTH_COMPONENT32F, sky_size, sky_size);
     sky_map.set_filter(GL_LINEAR, GL_LINEAR);
     sky_map.set_wrap(GL_CLAMP_TO_EDGE);
@@ -22,6 +19,13 @@ SceneLighting::SceneLighting(int env_size, int shadow_size, int sky_size)
     const float far = 1.0f;
     glClearTexImage(sky_map.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
     set_line_lights({});
+}
+
+void SceneLighting::resize_shadow_map(int size) {
+    shadow_map = gl::Texture::create_2d("sun.shadow_map", GL_DEPTH_COMPONENT32F, size, size);
+    shadow_map.set_filter(GL_LINEAR, GL_LINEAR);
+    shadow_map.set_wrap(GL_CLAMP_TO_EDGE);
+    shadow_map.set_depth_compare(true, GL_LEQUAL);
 }
 
 void SceneLighting::set_line_lights(std::span<const LineLight> lights) {

@@ -51,6 +51,8 @@ public:
     glm::mat4 sky_view_proj{1.0f};
     gl::Texture sky_map;
     float env_max_lod() const { return float(env_levels_ - 1); }
+    // A new shadow map of `size` texels on a side (nothing drawn in it yet).
+    void resize_shadow_map(int size);
     // The line lights of the frame (none unless set; beyond kMaxLineLights ignored).
     void set_line_lights(std::span<const LineLight> lights);
 

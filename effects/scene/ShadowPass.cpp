@@ -17,6 +17,10 @@ void ShadowPass::register_params(ParamRegistry& params) {
 
 void ShadowPass::render(const FrameContext& frame) {
     SceneLighting& lighting = frame.scene.lighting;
+    if (lighting.shadow_map.width() != frame.scene.quality.shadow_map_size) {
+        lighting.resize_shadow_map(frame.scene.quality.shadow_map_size);
+        fbo_initialised_ = false;
+    }
     const int size = lighting.shadow_map.width();
     glm::vec3 view_dir = -glm::vec3(frame.camera.view[0][2], frame.camera.view[1][2], frame.camera.view[2][2]);
     glm::vec3 flat(view_dir.x, 0.0f, view_dir.z);
@@ -36,6 +40,7 @@ void ShadowPass::render(const FrameContext& frame) {
     lighting.shadow_view_proj = proj * view;
 
     if (!fbo_initialised_) {
+        fbo_ = gl::Framebuffer::create("shadow");
         fbo_.attach_depth(lighting.shadow_map);
         fbo_.set_draw_buffers({});
         fbo_.check_complete();
@@ -51,9 +56,9 @@ void ShadowPass::render(const FrameContext& frame) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.5f, 2.0f);
     glDisable(GL_CULL_FACE);  // thin walls and open meshes must cast shadows too
-    program_.use();
     program_.set("u_view_proj", lighting.shadow_view_proj);
-    frame.scene.geometry.draw(program_, frame.world, true);
+    frame.scene.geometry.draw(program_, program_, frame.world, SceneGeometry::Use::ShadowCasters,
+                              Frustum(lighting.shadow_view_proj));
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 

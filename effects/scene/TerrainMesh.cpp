@@ -18,29 +18,39 @@ Model make_terrain_model(const sim::Terrain& terrain, float spacing_m) {
     std::sort(zs.begin(), zs.end());
     zs.erase(std::unique(zs.begin(), zs.end(), [](float a, float b) { return std::fabs(a - b) < 0.05f; }), zs.end());
 
-    MeshData m;
-    m.name = "terrain";
-    m.roughness = 0.9f;
+    // Tiles of kTileCells x kTileCells cells, each its own mesh with its own bounds, so
+    // the passes skip what their view cannot see. Edge vertices are repeated, bit for bit.
+    constexpr size_t kTileCells = 16;
     const size_t nx = xs.size(), nz = zs.size();
-    m.vertices.reserve(nx * nz);
-    for (float z : zs)
-        for (float x : xs) {
-            float e = 0.25f;
-            float dx = terrain.ground_height({x + e, z}) - terrain.ground_height({x - e, z});
-            float dz = terrain.ground_height({x, z + e}) - terrain.ground_height({x, z - e});
-            glm::vec3 n = glm::normalize(glm::vec3(-dx / (2 * e), 1.0f, -dz / (2 * e)));
-            m.vertices.push_back({{x, terrain.ground_height({x, z}), z}, n, glm::vec4(1.0f)});
-        }
-    for (size_t j = 0; j + 1 < nz; ++j)
-        for (size_t i = 0; i + 1 < nx; ++i) {
-            uint32_t a = uint32_t(j * nx + i), b = a + 1, c = uint32_t(a + nx), d = c + 1;
-            m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
+    auto vertex = [&](float x, float z) {
+        float e = 0.25f;
+        float dx = terrain.ground_height({x + e, z}) - terrain.ground_height({x - e, z});
+        float dz = terrain.ground_height({x, z + e}) - terrain.ground_height({x, z - e});
+        glm::vec3 n = glm::normalize(glm::vec3(-dx / (2 * e), 1.0f, -dz / (2 * e)));
+        return MeshVertex{{x, terrain.ground_height({x, z}), z}, n, glm::vec4(1.0f)};
+    };
+    std::vector<MeshData> tiles;
+    for (size_t j0 = 0; j0 + 1 < nz; j0 += kTileCells)
+        for (size_t i0 = 0; i0 + 1 < nx; i0 += kTileCells) {
+            const size_t j1 = std::min(j0 + kTileCells, nz - 1), i1 = std::min(i0 + kTileCells, nx - 1);
+            const size_t w = i1 - i0 + 1;
+            MeshData m;
+            m.name = "terrain";
+            m.roughness = 0.9f;
+            for (size_t j = j0; j <= j1; ++j)
+                for (size_t i = i0; i <= i1; ++i) m.vertices.push_back(vertex(xs[i], zs[j]));
+            for (size_t j = 0; j + 1 < j1 - j0 + 1; ++j)
+                for (size_t i = 0; i + 1 < w; ++i) {
+                    uint32_t a = uint32_t(j * w + i), b = a + 1, c = uint32_t(a + w), d = c + 1;
+                    m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
+                }
+            tiles.push_back(std::move(m));
         }
     Model model;
     model.name = "terrain";
     model.bounds_min = {-h, level.seabed_m, -h};
     model.bounds_max = {h, level.land_height_m + 20.0f, h};
-    model.meshes.push_back(std::move(m));
+    model.meshes = std::move(tiles);
     return model;
 }
 

@@ -45,11 +45,24 @@ float sun_visibility(vec3 world_pos, vec3 n) {
     vec4 s = u_shadow_matrix * vec4(world_pos + n * 0.08, 1.0);
     vec3 p = s.xyz / s.w;
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
+    // Each tap is a 2x2 bilinear comparison. SHADOW_TAPS (a quality preset's): 9 taps
+    // over 3x3 texels, 4 at half-texel offsets (a tent over the same 3x3), or 1.
+#if defined(SHADOW_TAPS) && SHADOW_TAPS == 1
+    return texture(u_shadow_map, vec3(p.xy, p.z - 0.0015));
+#elif defined(SHADOW_TAPS) && SHADOW_TAPS == 4
+    vec2 texel = 0.5 / vec2(textureSize(u_shadow_map, 0));
+    float sum = texture(u_shadow_map, vec3(p.xy + vec2(-texel.x, -texel.y), p.z - 0.0015)) +
+                texture(u_shadow_map, vec3(p.xy + vec2(texel.x, -texel.y), p.z - 0.0015)) +
+                texture(u_shadow_map, vec3(p.xy + vec2(-texel.x, texel.y), p.z - 0.0015)) +
+                texture(u_shadow_map, vec3(p.xy + vec2(texel.x, texel.y), p.z - 0.0015));
+    return sum * 0.25;
+#else
     vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
     float sum = 0.0;
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) sum += texture(u_shadow_map, vec3(p.xy + vec2(x, y) * texel, p.z - 0.0015));
     return sum / 9.0;
+#endif
 }
 
 // How much of the sky p sees: 0 under a roof, 1 in the open, soft across a texel (the

@@ -11,9 +11,9 @@ uniform vec4 u_tint;  // multiplies the vertex colour (thrown objects' colours)
 uniform float u_roughness;
 uniform float u_metallic;
 uniform vec3 u_emissive;  // the material's own light: a cabin lining lit by the light coming in
-uniform int u_surface;  // 0: vertex colour, 1: ground (road, grass, quay, sea bed)
 
-// Ground roads as rectangles in xz; the rest is grass, the quay edge concrete.
+// GROUND (a variant of the program): the terrain, coloured here as roads (rectangles
+// in xz), grass, the quay's concrete and the sea bed; otherwise the vertex colour.
 uniform int u_road_count;
 uniform vec4 u_roads[16];  // min.xz, max.xz
 uniform float u_shore_z;
@@ -68,7 +68,9 @@ void main() {
     if (!gl_FrontFacing) n = -n;
     vec3 base = v_color.rgb * u_tint.rgb;
     float roughness = u_roughness;
-    if (u_surface == 1) base = ground_colour(v_world_pos, roughness);
+#ifdef GROUND
+    base = ground_colour(v_world_pos, roughness);
+#endif
     vec3 c = shade_surface(base, roughness, u_metallic, v_world_pos, n, u_eye) + u_emissive;
     o_colour = vec4(apply_fog(c, v_world_pos, u_eye), 1.0);
     o_normal = vec4(n, 1.0);
