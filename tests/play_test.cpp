@@ -5,6 +5,7 @@
 #include "game/play/DebugUi.h"
 #include "game/play/FixedStepClock.h"
 #include "game/play/KeyboardInput.h"
+#include "game/play/PlayLoop.h"
 #include "game/play/PlayMode.h"
 #include "game/play/QualityChoice.h"
 #include "game/replay/FrameSelection.h"

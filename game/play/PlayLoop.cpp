@@ -1,5 +1,7 @@
 #include "game/play/PlayLoop.h"
 
+#include <cstdio>
+#include <ctime>
 #include <iostream>
 
 #include "effects/gl/Gl.h"
@@ -7,7 +9,6 @@
 #include "game/capture/Readback.h"
 #include "game/play/FixedStepClock.h"
 #include "game/play/KeyboardInput.h"
-#include "game/play/PlayMode.h"
 
 namespace game {
 
@@ -19,6 +20,18 @@ constexpr double kIdleWaitSeconds = 0.25;
 // How long the HUD keeps saying "behind real time" after the spiral cap dropped time.
 constexpr auto kBehindShownFor = std::chrono::seconds(1);
 }  // namespace
+
+fs::path screenshot_path(std::chrono::system_clock::time_point when) {
+    const std::time_t seconds = std::chrono::system_clock::to_time_t(when);
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(when.time_since_epoch()).count() % 1000;
+    std::tm local{};
+    localtime_r(&seconds, &local);
+    char name[64];
+    std::strftime(name, sizeof name, "spindrift_%Y%m%d-%H%M%S", &local);
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, "-%03d.png", int(ms));
+    return fs::path("screenshots") / (std::string(name) + suffix);
+}
 
 void PlayLoop::FpsMeter::frame(Clock::time_point now) {
     ++frames_;

@@ -3,6 +3,7 @@
 // real time becomes fixed 60 Hz ticks, the renderer draws into a Screen, Dear ImGui
 // draws the HUD and the debug panel on top.
 #include <chrono>
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -17,6 +18,10 @@
 #include "game/session/GameSession.h"
 
 namespace game {
+
+// Where F12 writes a screenshot taken at `when` (local time, to the millisecond):
+// screenshots/spindrift_YYYYMMDD-HHMMSS-mmm.png.
+std::filesystem::path screenshot_path(std::chrono::system_clock::time_point when);
 
 // One frame the loop drew while playing (not the first one, nor idle ones).
 struct FrameRecord {

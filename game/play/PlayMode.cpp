@@ -1,7 +1,5 @@
 #include "game/play/PlayMode.h"
 
-#include <cstdio>
-#include <ctime>
 #include <iostream>
 
 #include "game/cli/ExitCode.h"
@@ -14,18 +12,6 @@
 namespace game {
 
 namespace fs = std::filesystem;
-
-fs::path screenshot_path(std::chrono::system_clock::time_point when) {
-    const std::time_t seconds = std::chrono::system_clock::to_time_t(when);
-    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(when.time_since_epoch()).count() % 1000;
-    std::tm local{};
-    localtime_r(&seconds, &local);
-    char name[64];
-    std::strftime(name, sizeof name, "spindrift_%Y%m%d-%H%M%S", &local);
-    char suffix[16];
-    std::snprintf(suffix, sizeof suffix, "-%03d.png", int(ms));
-    return fs::path("screenshots") / (std::string(name) + suffix);
-}
 
 std::vector<std::string> demo_replay_args(const fs::path& replay, uint32_t ticks, const fs::path& out_dir) {
     constexpr uint32_t kEvery = 30;

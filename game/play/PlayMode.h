@@ -1,6 +1,5 @@
 #pragma once
 // Play in a window: the keyboard (or a replay) drives the world through the PlayLoop.
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -27,10 +26,6 @@ int play_in_window(GameSession& session, const PlayOptions& options);
 // hashes on the way; P pauses, Esc quits. At the end the last frame stays up until the
 // window is closed. Returns kExitCheckFailed if the world diverged, else kExitOk.
 int play_replay_in_window(const Replay& replay, GameSession& session, QualityChoice quality);
-
-// Where F12 writes a screenshot taken at `when` (local time, to the millisecond):
-// screenshots/spindrift_YYYYMMDD-HHMMSS-mmm.png.
-std::filesystem::path screenshot_path(std::chrono::system_clock::time_point when);
 
 // The `replay` command line that renders every 30th tick of a replay `ticks` long
 // headless into `out_dir`: what `play` does without a display.
