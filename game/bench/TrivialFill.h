@@ -6,6 +6,6 @@ namespace game {
 
 // Median of `repeats` fills, in milliseconds. Needs a current GL context; leaves the
 // default framebuffer bound.
-double trivial_fill_ms(int width, int height, int repeats = 31);
+double trivial_fill_ms(int width, int height, int repeats = 101);
 
 }  // namespace game
