@@ -16,6 +16,8 @@
 #include <string>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "game/capture/ImageFiles.h"
 
 namespace fs = std::filesystem;
@@ -27,8 +29,9 @@ struct CommandResult {
     std::string output;  // stdout and stderr
 };
 
-CommandResult run(const std::string& args) {
-    std::string cmd = std::string(SPINDRIFT_BIN) + " " + args + " 2>&1";
+// `env_prefix`, e.g. "env -u DISPLAY", runs the program without a display.
+CommandResult run(const std::string& args, const std::string& env_prefix = "") {
+    std::string cmd = env_prefix + std::string(SPINDRIFT_BIN) + " " + args + " 2>&1";
     CommandResult r;
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
@@ -88,7 +91,8 @@ protected:
 TEST_F(Cli, HelpNamesEveryCommandAndExitCode) {
     CommandResult r = run("--help");
     EXPECT_EQ(r.code, 0);
-    for (const char* w : {"play", "record", "replay", "bench", "exit codes"}) EXPECT_NE(r.output.find(w), std::string::npos) << w;
+    for (const char* w : {"play", "record", "replay", "timedemo", "bench", "--quality", "exit codes"})
+        EXPECT_NE(r.output.find(w), std::string::npos) << w;
     EXPECT_EQ(run("--version").code, 0);
     EXPECT_EQ(run("fly").code, 2);
     EXPECT_EQ(run("replay x.replay --fast").code, 2);
@@ -278,3 +282,79 @@ TEST_F(Cli, FramesAndExrGoWhereAsked) {
 }
 
 }  // namespace
+
+namespace {
+constexpr const char* kNoDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY ";
+}
+
+TEST_F(Cli, TimedemoHeadlessReportsItsNumbersAsJson) {
+    const fs::path replay = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays" / "harbour_energy.replay";
+    const fs::path json = dir_ / "td.json";
+    CommandResult r = run("timedemo " + replay.string() + " --size 320x180 --json " + json.string(), kNoDisplay);
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("p95"), std::string::npos) << r.output;
+    std::ifstream in(json);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["width"], 320);
+    EXPECT_EQ(j["height"], 180);
+    EXPECT_EQ(j["quality"], "auto");
+    EXPECT_GT(j["frames"].get<int>(), 0);
+    const nlohmann::json& ms = j["frame_ms"];
+    EXPECT_GT(ms["p50"].get<double>(), 0.0);
+    EXPECT_LE(ms["p50"].get<double>(), ms["p95"].get<double>());
+    EXPECT_LE(ms["p95"].get<double>(), ms["p99"].get<double>());
+    EXPECT_LE(ms["p99"].get<double>(), ms["worst"].get<double>());
+    EXPECT_GT(j["fill_ms"].get<double>(), 0.0);
+    EXPECT_GT(j["frame_fills"]["p50"].get<double>(), 0.0);
+    EXPECT_GT(j["game_over_wall"].get<double>(), 0.0);
+    EXPECT_GT(j["average_fps"].get<double>(), 0.0);
+    EXPECT_EQ(j["ticks"], j["replay_ticks"]);  // it played to the end
+    EXPECT_EQ(j["hashes_checked"], j["replay_ticks"]);
+    EXPECT_TRUE(j["desync"].is_null());
+    EXPECT_FALSE(j["passes"].empty());
+    for (const auto& p : j["passes"]) EXPECT_GE(p["ms"].get<double>(), 0.0) << p["name"];
+    double seconds = 0.0;
+    for (const auto& s : j["seconds_at_scale"]) {
+        EXPECT_GE(s["scale"].get<double>(), 0.4 - 1e-6);
+        EXPECT_LE(s["scale"].get<double>(), 1.0 + 1e-6);
+        seconds += s["seconds"].get<double>();
+    }
+    EXPECT_NEAR(seconds, j["wall_s"].get<double>(), 1e-6);
+}
+
+TEST_F(Cli, TimedemoRefusesBadInputClearly) {
+    const fs::path replay = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays" / "harbour_energy.replay";
+    const fs::path corrupt = dir_ / "corrupt.replay";
+    write_file(corrupt, "JUNK not a replay at all");
+    struct Case {
+        std::string args;
+        int code;
+        std::string says;
+    };
+    const std::vector<Case> cases = {
+        {"", 2, "one replay file"},
+        {(dir_ / "nope.replay").string(), 3, "nope.replay"},
+        {corrupt.string(), 3, "not a Spindrift replay"},
+        {replay.string() + " --size 0x0", 2, "--size"},
+        {replay.string() + " --size 99999x5", 2, "--size"},
+        {replay.string() + " --size 640", 2, "--size"},
+        {replay.string() + " --size 640x360x2", 2, "--size"},
+        {replay.string() + " --quality ultra", 2, "--quality must be low, medium, high or auto"},
+        {replay.string() + " --json", 2, "--json needs a value"},
+    };
+    for (const Case& c : cases) {
+        CommandResult r = run("timedemo " + c.args, kNoDisplay);
+        EXPECT_EQ(r.code, c.code) << c.args << ": " << r.output;
+        EXPECT_NE(r.output.find(c.says), std::string::npos) << c.args << ": " << r.output;
+        EXPECT_EQ(r.output.find("terminate"), std::string::npos) << c.args << ": " << r.output;
+    }
+}
+
+TEST_F(Cli, PlayAndReplayRefuseABadQuality) {
+    CommandResult play = run("play --quality ultra", kNoDisplay);
+    EXPECT_EQ(play.code, 2) << play.output;
+    EXPECT_NE(play.output.find("--quality must be"), std::string::npos) << play.output;
+    CommandResult replay = run("replay x.replay --quality 3");
+    EXPECT_EQ(replay.code, 2) << replay.output;
+    EXPECT_NE(replay.output.find("--quality must be"), std::string::npos) << replay.output;
+}

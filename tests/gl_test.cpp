@@ -13,10 +13,12 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cstring>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 using namespace effects::gl;
 
@@ -547,4 +549,45 @@ TEST_F(GlTest, PassTimerGpuQueriesArriveWithinTheLatency) {
     EXPECT_EQ(timer.results()[1].name, "second");
     EXPECT_GE(timer.results()[0].ms, 0.0);
     EXPECT_TRUE(timer.average_ms("second").has_value());
+}
+
+TEST_F(GlTest, PassTimerSampledMeasuresOnePassAFrameInTurn) {
+    Target target(32, 32);
+    const Program program = Program::from_sources(
+        "timed", {{GL_VERTEX_SHADER, kFullScreenVert}, {GL_FRAGMENT_SHADER, kSolidFrag}});
+    program.use();
+    PassTimer timer(TimingMode::Sampled);
+    const auto frame = [&] {
+        timer.frame_begin();
+        { auto pass = timer.scope("draw"); draw_full_screen(); }
+        {
+            // Wall time a pass takes counts, whatever the GPU timer would say.
+            auto pass = timer.scope("wait");
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        { auto pass = timer.scope("clear"); glClear(GL_COLOR_BUFFER_BIT); }
+        timer.frame_end();
+    };
+    // The first frame (shader compiles) is not measured, then one more pass each frame.
+    frame();
+    EXPECT_TRUE(timer.results().empty());
+    EXPECT_FALSE(timer.average_ms("draw").has_value());
+    frame();
+    ASSERT_EQ(timer.results().size(), 1u);
+    EXPECT_EQ(timer.results()[0].name, "draw");
+    frame();
+    ASSERT_EQ(timer.results().size(), 2u);
+    EXPECT_EQ(timer.results()[1].name, "wait");
+    EXPECT_GE(timer.results()[1].ms, 5.0);
+    frame();
+    ASSERT_EQ(timer.results().size(), 3u);
+    EXPECT_EQ(timer.results()[2].name, "clear");
+    for (int i = 0; i < 6; ++i) frame();
+    // In frame order, each with its latest time and average.
+    ASSERT_EQ(timer.results().size(), 3u);
+    EXPECT_EQ(timer.results()[0].name, "draw");
+    EXPECT_EQ(timer.results()[2].name, "clear");
+    EXPECT_GE(*timer.average_ms("wait"), 5.0);
+    EXPECT_EQ(timer.completed_frames(), 10u);
+    EXPECT_THROW(timer.end(), std::logic_error);
 }

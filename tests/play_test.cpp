@@ -1,10 +1,13 @@
 // Play mode without a window: key mapping, the fixed-step clock, HUD text, param
-// grouping, screenshot names and the no-display fallback.
+// grouping, quality names, screenshot names and the no-display fallback.
 #include "game/cli/Commands.h"
 #include "game/cli/ExitCode.h"
 #include "game/play/DebugUi.h"
+#include "game/play/FixedStepClock.h"
 #include "game/play/KeyboardInput.h"
+#include "game/play/PlayLoop.h"
 #include "game/play/PlayMode.h"
+#include "game/play/QualityChoice.h"
 #include "game/replay/FrameSelection.h"
 
 #define GLFW_INCLUDE_NONE
@@ -73,7 +76,10 @@ TEST(KeyboardInput, EachKeyFromTheHelpHoldsItsControl) {
         {GLFW_KEY_C, Control::Camera},          {GLFW_KEY_V, Control::Wipers},
         {GLFW_KEY_R, Control::RainUp},          {GLFW_KEY_F, Control::RainDown},
     };
-    for (auto [key, control] : expected) EXPECT_EQ(keys({key}).held, bit(control)) << "GLFW key " << key;
+    for (auto [key, control] : expected) {
+        EXPECT_EQ(keys({key}).held, bit(control)) << "GLFW key " << key;
+        EXPECT_EQ(game::control_for_key(key), control) << "GLFW key " << key;
+    }
 }
 
 TEST(KeyboardInput, EveryControlHasAKeyAndOnlyOneBinding) {
@@ -108,6 +114,7 @@ TEST(KeyboardInput, AllBoundKeysGiveAQuantisedInput) {
 TEST(KeyboardInput, ProgramKeysAreNotControls) {
     for (int key : {GLFW_KEY_P, GLFW_KEY_F12, GLFW_KEY_F1, GLFW_KEY_F2, GLFW_KEY_ESCAPE}) {
         EXPECT_EQ(keys({key}).held, 0) << "GLFW key " << key;
+        EXPECT_FALSE(game::control_for_key(key).has_value()) << "GLFW key " << key;
         EXPECT_TRUE(game::ui_action_for_key(key).has_value()) << "GLFW key " << key;
     }
     EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_P), UiAction::Pause);
@@ -174,6 +181,67 @@ TEST(FixedStepClock, SlowFramesAreCappedAndTheRestDropped) {
     EXPECT_EQ(c2.pending(), milliseconds(7));
 }
 
+TEST(FixedStepClock, SlowFramesAreMadeUpInFull) {
+    game::FixedStepClock clock(60);
+    // 10 fps: six ticks a frame, so the world keeps real time.
+    int ticks = 0;
+    for (int i = 0; i < 50; ++i) {
+        const int n = clock.advance(milliseconds(100));
+        EXPECT_EQ(n, 6);
+        EXPECT_EQ(clock.dropped(), nanoseconds(0));
+        ticks += n;
+    }
+    EXPECT_EQ(ticks, 300);
+    // Uneven frames of 70..230 ms add up to the real time they cover.
+    game::FixedStepClock uneven(60);
+    int64_t total_ms = 0;
+    ticks = 0;
+    for (int i = 0; i < 300; ++i) {
+        const int ms = 70 + (i * 37) % 161;
+        total_ms += ms;
+        ticks += uneven.advance(milliseconds(ms));
+        EXPECT_EQ(uneven.dropped(), nanoseconds(0)) << "frame " << i;
+    }
+    EXPECT_EQ(ticks, total_ms * 60 / 1000);
+}
+
+TEST(FixedStepClock, OnlyASpiralIsCapped) {
+    game::FixedStepClock clock(60);
+    EXPECT_EQ(clock.max_ticks_per_frame(), 15);  // a quarter of a second
+    // 0.25 s owed: all of it runs.
+    EXPECT_EQ(clock.advance(milliseconds(250)), 15);
+    EXPECT_EQ(clock.dropped(), nanoseconds(0));
+    // 0.4 s: 15 ticks run, the other 9 are dropped and said so.
+    clock.reset();
+    EXPECT_EQ(clock.advance(milliseconds(400)), 15);
+    EXPECT_EQ(clock.dropped(), milliseconds(150));
+    EXPECT_EQ(clock.pending(), nanoseconds(0));
+    // The next normal frame is on time again.
+    EXPECT_EQ(clock.advance(milliseconds(50)), 3);
+    EXPECT_EQ(clock.dropped(), nanoseconds(0));
+    // A stall of several seconds drops everything past the cap.
+    EXPECT_EQ(clock.advance(std::chrono::seconds(5)), 15);
+    EXPECT_EQ(clock.dropped(), milliseconds(4750));
+}
+
+TEST(FixedStepClock, AlphaIsTheFractionOfATickPending) {
+    game::FixedStepClock clock(100);
+    EXPECT_DOUBLE_EQ(clock.alpha(), 0.0);
+    EXPECT_EQ(clock.advance(milliseconds(8)), 0);
+    EXPECT_NEAR(clock.alpha(), 0.8, 1e-12);
+    EXPECT_EQ(clock.advance(milliseconds(5)), 1);
+    EXPECT_NEAR(clock.alpha(), 0.3, 1e-12);
+    // Whatever the frames, alpha stays in [0, 1).
+    game::FixedStepClock c60(60);
+    for (int i = 0; i < 1000; ++i) {
+        c60.advance(nanoseconds(1'000'000 + (int64_t(i) * 7'919'813) % 90'000'000));
+        EXPECT_GE(c60.alpha(), 0.0);
+        EXPECT_LT(c60.alpha(), 1.0);
+    }
+    clock.reset();
+    EXPECT_DOUBLE_EQ(clock.alpha(), 0.0);
+}
+
 TEST(FixedStepClock, NegativeTimeAndReset) {
     game::FixedStepClock clock(100);
     EXPECT_EQ(clock.advance(milliseconds(-50)), 0);
@@ -195,13 +263,18 @@ TEST(Hud, LinesShowStateSpeedAndPasses) {
     hud.tick = 1234;
     hud.fps = 59.94;
     hud.passes = {{"shadow", 1.0, 1.25}, {"opaque", 2.0, 2.5}};
+    hud.quality = "auto";
+    hud.render_scale = 0.65f;
+    hud.render_width = 832;
+    hud.render_height = 468;
     std::vector<std::string> lines = game::hud_lines(hud);
-    ASSERT_GE(lines.size(), 6u);
+    ASSERT_GE(lines.size(), 7u);
     EXPECT_EQ(lines[0], "42 km/h  boat, driver view");
     EXPECT_EQ(lines[1], "wipers intermittent  rain 50%");
     EXPECT_EQ(lines[2], "tick 1234  59.9 fps");
-    EXPECT_NE(lines[3].find("shadow"), std::string::npos);
-    EXPECT_NE(lines[3].find("1.25 ms"), std::string::npos);
+    EXPECT_EQ(lines[3], "quality auto  scale 0.65 (832x468)");
+    EXPECT_NE(lines[4].find("shadow"), std::string::npos);
+    EXPECT_NE(lines[4].find("1.25 ms"), std::string::npos);
     EXPECT_NE(lines.back().find("total"), std::string::npos);
     EXPECT_NE(lines.back().find("3.75 ms"), std::string::npos);
 
@@ -210,6 +283,27 @@ TEST(Hud, LinesShowStateSpeedAndPasses) {
     hud.status = "replay 5/10";
     lines = game::hud_lines(hud);
     EXPECT_EQ(lines[0].rfind("PAUSED  REC  replay 5/10", 0), 0u) << lines[0];
+
+    hud = {};
+    hud.behind = true;
+    EXPECT_EQ(game::hud_lines(hud)[0].rfind("BEHIND REAL TIME", 0), 0u);
+    hud.behind = false;
+    hud.unfocused = true;
+    EXPECT_EQ(game::hud_lines(hud)[0].rfind("PAUSED (window not focused)", 0), 0u);
+    // Without a quality (no renderer) there is no quality line.
+    for (const std::string& line : game::hud_lines(hud)) EXPECT_EQ(line.find("quality"), std::string::npos);
+}
+
+TEST(QualityChoice, NamesRoundTripAndAutoRunsMedium) {
+    for (game::QualityChoice c : game::kQualityChoices)
+        EXPECT_EQ(game::parse_quality_choice(game::quality_choice_name(c)), c);
+    EXPECT_EQ(game::quality_choice_name(game::QualityChoice::Auto), "auto");
+    EXPECT_EQ(game::preset_of(game::QualityChoice::Auto), effects::Quality::Medium);
+    EXPECT_EQ(game::preset_of(game::QualityChoice::Low), effects::Quality::Low);
+    EXPECT_EQ(game::preset_of(game::QualityChoice::High), effects::Quality::High);
+    EXPECT_FALSE(game::parse_quality_choice("ultra").has_value());
+    EXPECT_FALSE(game::parse_quality_choice("Auto").has_value());
+    EXPECT_FALSE(game::parse_quality_choice("").has_value());
 }
 
 TEST(Hud, StateFollowsTheWorld) {

@@ -6,7 +6,13 @@
 namespace effects::gl {
 namespace {
 constexpr double kSmoothing = 0.1;  // weight of the newest frame in the average
+// A sampled pass is measured once a round of passes, so its newest time weighs more.
+constexpr double kSampleSmoothing = 0.25;
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
+}  // namespace
 
 PassTimer::PassTimer(TimingMode mode) : mode_(mode) {}
 
@@ -26,6 +32,16 @@ void PassTimer::frame_begin() {
         profile_passes_.clear();
         return;
     }
+    if (mode_ == TimingMode::Sampled) {
+        frame_names_.clear();
+        sample_ms_.reset();
+        // The first frame only lists the passes: its times are mostly the driver
+        // compiling shaders, and a pass measured once a round would show them for long.
+        sample_name_ = last_frame_names_.empty()
+                           ? std::string()
+                           : last_frame_names_[(frame_number_ - 1) % last_frame_names_.size()];
+        return;
+    }
     FrameQueries& frame = frames_[frame_number_ % frames_.size()];
     // Reusing this frame's queries: their results are kLatencyFrames old by now,
     // so waiting for them almost never stalls.
@@ -39,7 +55,13 @@ void PassTimer::begin(std::string_view name) {
                              "' is open: passes do not nest");
     pass_open_ = true;
     open_name_ = name;
-    if (mode_ == TimingMode::Profile) {
+    if (mode_ == TimingMode::Sampled) {
+        if (std::find(frame_names_.begin(), frame_names_.end(), name) == frame_names_.end())
+            frame_names_.emplace_back(name);
+        sampling_ = !sample_name_.empty() && name == sample_name_;
+        if (!sampling_) return;
+    }
+    if (mode_ == TimingMode::Profile || mode_ == TimingMode::Sampled) {
         glFinish();  // earlier work must not count against this pass
         pass_start_ = std::chrono::steady_clock::now();
         return;
@@ -60,9 +82,14 @@ void PassTimer::end() {
     pass_open_ = false;
     if (mode_ == TimingMode::Profile) {
         glFinish();
-        const auto elapsed = std::chrono::steady_clock::now() - pass_start_;
-        profile_passes_.push_back(
-            {open_name_, std::chrono::duration<double, std::milli>(elapsed).count(), 0.0});
+        profile_passes_.push_back({open_name_, ms_since(pass_start_), 0.0});
+        return;
+    }
+    if (mode_ == TimingMode::Sampled) {
+        if (!sampling_) return;
+        sampling_ = false;
+        glFinish();
+        sample_ms_ = sample_ms_.value_or(0.0) + ms_since(pass_start_);
         return;
     }
     glEndQuery(GL_TIME_ELAPSED);
@@ -75,6 +102,11 @@ void PassTimer::frame_end() {
     if (mode_ == TimingMode::Profile) {
         publish(std::move(profile_passes_));
         profile_passes_.clear();
+        ++frame_number_;
+        return;
+    }
+    if (mode_ == TimingMode::Sampled) {
+        publish_sample();
         ++frame_number_;
         return;
     }
@@ -107,6 +139,20 @@ bool PassTimer::collect(FrameQueries& frame, bool wait) {
     return true;
 }
 
+PassTimer::NameStats& PassTimer::record(const std::string& name, double ms, double weight) {
+    auto it = std::find_if(stats_.begin(), stats_.end(), [&](const NameStats& s) { return s.name == name; });
+    if (it == stats_.end()) return stats_.emplace_back(NameStats{name, ms, ms});
+    it->last_ms = ms;
+    it->average_ms += weight * (ms - it->average_ms);
+    return *it;
+}
+
+const PassTimer::NameStats* PassTimer::stats(std::string_view name) const {
+    for (const NameStats& s : stats_)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
 void PassTimer::publish(std::vector<PassTime> passes) {
     // A pass name run twice in a frame averages its total.
     std::vector<std::pair<std::string, double>> totals;
@@ -118,22 +164,25 @@ void PassTimer::publish(std::vector<PassTime> passes) {
         else
             it->second += pass.ms;
     }
-    for (const auto& total : totals) {  // not a structured binding: clang 14 cannot capture one
-        auto it = std::find_if(averages_.begin(), averages_.end(),
-                               [&](const auto& a) { return a.first == total.first; });
-        if (it == averages_.end())
-            averages_.emplace_back(total.first, total.second);
-        else
-            it->second += kSmoothing * (total.second - it->second);
-    }
-    for (PassTime& pass : passes) pass.average_ms = *average_ms(pass.name);
+    for (const auto& total : totals) record(total.first, total.second, kSmoothing);
+    for (PassTime& pass : passes) pass.average_ms = stats(pass.name)->average_ms;
     results_ = std::move(passes);
     ++completed_frames_;
 }
 
+void PassTimer::publish_sample() {
+    if (sample_ms_) record(sample_name_, *sample_ms_, kSampleSmoothing);
+    // Every pass of this frame measured so far, with its latest measurement.
+    results_.clear();
+    for (const std::string& name : frame_names_)
+        if (const NameStats* s = stats(name)) results_.push_back({name, s->last_ms, s->average_ms});
+    last_frame_names_ = std::move(frame_names_);
+    frame_names_.clear();
+    ++completed_frames_;
+}
+
 std::optional<double> PassTimer::average_ms(std::string_view name) const {
-    for (const auto& [n, ms] : averages_)
-        if (n == name) return ms;
+    if (const NameStats* s = stats(name)) return s->average_ms;
     return std::nullopt;
 }
 

@@ -13,13 +13,14 @@
 namespace effects::gl {
 
 enum class TimingMode {
-    GpuQueries,  // GL_TIME_ELAPSED queries, read a few frames later (no stall)
+    GpuQueries,  // GL_TIME_ELAPSED queries, read a few frames later (no stall); ~0 on llvmpipe
     Profile,     // glFinish around each pass + wall clock: exact on llvmpipe, slows the frame
+    Sampled,     // Profile's measurement for one pass a frame, in turn: exact and nearly free
 };
 
 struct PassTime {
     std::string name;
-    double ms = 0.0;
+    double ms = 0.0;          // Sampled: the pass's latest measurement, up to a round of passes old
     double average_ms = 0.0;  // smoothed over recent frames (per name, per frame total)
 };
 
@@ -27,6 +28,9 @@ struct PassTime {
 //   timer.frame_begin();
 //   { auto t = timer.scope("water"); ... }
 //   timer.frame_end();
+// Sampled mode measures every run of one pass name per frame, the next name in the
+// last frame's order each frame, so a list of N passes is measured once every N frames
+// (from the second frame on: the first one's times are mostly shader compiles).
 // Passes do not nest (GL_TIME_ELAPSED queries cannot). Misuse (begin without
 // frame_begin, nested begin, end without begin) throws std::logic_error.
 class PassTimer {
@@ -70,9 +74,18 @@ private:
         bool pending = false;
     };
 
+    struct NameStats {
+        std::string name;
+        double last_ms = 0.0;
+        double average_ms = 0.0;
+    };
+
     void require(bool condition, std::string_view what) const;
     bool collect(FrameQueries& frame, bool wait);
     void publish(std::vector<PassTime> passes);
+    void publish_sample();
+    NameStats& record(const std::string& name, double ms, double weight);
+    const NameStats* stats(std::string_view name) const;
 
     TimingMode mode_;
     bool in_frame_ = false;
@@ -82,11 +95,18 @@ private:
     std::uint64_t completed_frames_ = 0;
 
     std::array<FrameQueries, kLatencyFrames> frames_;  // GpuQueries: frame n uses [n % size]
-    std::chrono::steady_clock::time_point pass_start_;  // Profile
+    std::chrono::steady_clock::time_point pass_start_;  // Profile, Sampled
     std::vector<PassTime> profile_passes_;              // Profile: current frame
 
+    // Sampled: the pass names of this frame and the last in order (each once), the name
+    // measured this frame, whether the open pass is it, and its time so far this frame.
+    std::vector<std::string> frame_names_, last_frame_names_;
+    std::string sample_name_;
+    bool sampling_ = false;
+    std::optional<double> sample_ms_;
+
     std::vector<PassTime> results_;
-    std::vector<std::pair<std::string, double>> averages_;
+    std::vector<NameStats> stats_;
 };
 
 }  // namespace effects::gl

@@ -13,6 +13,7 @@
 #include "game/bench/RainBench.h"
 #include "game/bench/FluidBench.h"
 #include "game/bench/DustBench.h"
+#include "game/bench/PlayBench.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
@@ -120,14 +121,15 @@ int bench_command(const std::vector<std::string>& argv) {
     if (!args.positional().empty()) throw UsageError("bench takes no positional arguments");
     const bool quick = args.flag("--quick");
     // --only a,b: just those groups, to measure one effect without the rest.
-    const std::set<std::string> groups = {"sim", "replay", "water", "dust", "fluid", "render", "energy", "rain"};
+    const std::set<std::string> groups = {"sim",    "replay", "water", "dust", "fluid",
+                                          "render", "energy", "rain",  "play"};
     std::set<std::string> only;
     if (auto list = args.value("--only")) {
         std::stringstream in(*list);
         for (std::string g; std::getline(in, g, ',');) {
             if (!groups.count(g))
                 throw UsageError("--only: unknown group '" + g +
-                                 "' (sim, replay, water, dust, fluid, render, energy, rain)");
+                                 "' (sim, replay, water, dust, fluid, render, energy, rain, play)");
             only.insert(g);
         }
     }
@@ -173,6 +175,7 @@ int bench_command(const std::vector<std::string>& argv) {
         bench_dust_render(report, 1280, 720, quick);
         bench_dust_render(report, 1280, 720, quick, DustBenchView::CloseUp);
     }
+    if (runs("play")) bench_play(report, quick);
     report.add({"memory", "peak resident after 1280x720 frames", peak_resident_mib(), "MiB", 1024.0});
 
     report.print_table();

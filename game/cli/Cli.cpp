@@ -23,23 +23,30 @@ constexpr const char* kHelp = R"(spindrift: a car-and-boat harbour game driving 
 usage: spindrift <command> [options]
 
 commands:
-  play   [--level NAME|PATH] [--record FILE] [--threads N]
+  play   [--level NAME|PATH] [--record FILE] [--quality Q] [--threads N]
          Drive the car, take the boat, throw, fire, in a window. With no display,
          renders the bundled demo replay headless instead and says where the frames went.
   record --level NAME|PATH --script FILE --out FILE [--threads N]
          Record a replay headless from an input script (see replays/*.script).
   replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
-              [--update-goldens] [--strict] [--threads N] [--level NAME|PATH]
-         Play a replay in a window, or headless. --check verifies every stored hash and
+              [--update-goldens] [--strict] [--threads N] [--level NAME|PATH] [--quality Q]
+         Play a replay in a window (at --quality), or headless. --check verifies every stored hash and
          compares the checkpoint frames with the goldens beside the replay
          (replays/NAME/tick_NNNNNN.png); failures write the actual frame and a
          difference image to --out (default spindrift-out/NAME). --frames picks the
          ticks to render (default: the checkpoints). --out writes the frames as PNG,
          --exr also as EXR (half-float HDR colour, depth, normals). --strict refuses a
          replay that was cut short. --update-goldens rewrites the goldens.
-  bench  [--json FILE] [--quick] [--only sim,replay,water,dust,fluid,render,energy,rain]
+  timedemo REPLAY [--size WxH] [--quality Q] [--json FILE] [--headless] [--threads N]
+         Play a replay through play's frame loop in real time, every frame drawn with
+         the HUD (a window if there is a display, else headless at --size, default
+         1280x720), check its hashes, and report frames, fps, frame-time p50/p95/p99 and
+         worst, per-pass means, the render scale over time, game time / wall time and a
+         trivial full-screen fill, every time also in fills; --json writes it as JSON.
+  bench  [--json FILE] [--quick] [--only sim,replay,water,dust,fluid,render,energy,rain,play]
          Time the sim per subsystem, the replay check and each render pass at 1280x720
-         and 640x360; prints a table and writes JSON.
+         and 640x360, and (play) the timedemo of every bundled replay at 1280x720 for
+         each quality; prints a table and writes JSON.
   fibres IMAGE [--slices N] [--layers OUT.png]  |  fibres --draw OUT.png [--slices N]
          Dust fibre statistics (seed 004): the 26-direction growth table of a binarised
          fibre image (black fibres on white; N slices stacked vertically, one per
@@ -48,11 +55,14 @@ commands:
 options:
   --level    a level name from levels/ (e.g. harbour) or a path to a level .json
   --threads  sim worker threads (1..64); results are identical for any count
+  --quality  low, medium, high or auto (default): medium with the render scale (0.4..1)
+             lowered and raised to hold 30 ms frames
   --help, --version
 
 keys (play): W/Up throttle, S/Down brake/reverse, A/D or Left/Right steer, E switch car/boat
   (near the pier), 1 throw heavy, 2 throw light, Space fire, C camera (chase/driver),
-  V wipers, R/F rain up/down, P pause, F12 screenshot, F1 debug panel, Esc quit.
+  V wipers, R/F rain up/down, P pause, F12 screenshot, F1 debug panel (quality, pass
+  times), F2 profile timing, Esc quit. Every press counts, however slow the frames.
 
 exit codes:
   0 success   1 a hash or frame check failed   2 bad command line
@@ -96,6 +106,7 @@ int run_cli(int argc, char** argv) {
         if (command == "record") return record_command(rest);
         if (command == "replay") return replay_command(rest);
         if (command == "bench") return bench_command(rest);
+        if (command == "timedemo") return timedemo_command(rest);
         if (command == "fibres") return fibres_command(rest);
         throw UsageError("unknown command '" + command + "'");
     } catch (const UsageError& e) {

@@ -1,4 +1,4 @@
-// spindrift play [--level NAME|PATH] [--record FILE] [--threads N]
+// spindrift play [--level NAME|PATH] [--record FILE] [--quality low|medium|high|auto] [--threads N]
 #include <filesystem>
 #include <iostream>
 
@@ -6,6 +6,7 @@
 #include "game/cli/Args.h"
 #include "game/cli/Commands.h"
 #include "game/cli/ExitCode.h"
+#include "game/cli/QualityOption.h"
 #include "game/play/PlayMode.h"
 #include "game/replay/ReplayReader.h"
 #include "game/session/GameSession.h"
@@ -45,14 +46,16 @@ int render_demo_headless(const Args& args) {
 }  // namespace
 
 int play_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--level", "--record", "--threads"}, {});
+    Args args(argv, {"--level", "--record", "--threads", "--quality"}, {});
     if (!args.positional().empty()) throw UsageError("play takes no positional arguments");
     const int threads = args.integer("--threads", 1, 1, 64);
+    const QualityChoice quality = quality_option(args);
     if (!display_available()) return render_demo_headless(args);
 
     GameSession session = GameSession::open(args.value("--level").value_or("harbour"), threads);
     PlayOptions options;
     if (auto record = args.value("--record")) options.record = fs::path(*record);
+    options.quality = quality;
     return play_in_window(session, options);
 }
 

@@ -1,5 +1,6 @@
 // spindrift replay FILE [--headless] [--check] [--frames LIST] [--out DIR] [--exr]
 //                      [--update-goldens] [--strict] [--threads N] [--level NAME|PATH]
+//                      [--quality low|medium|high|auto] (in a window)
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "game/cli/Commands.h"
 #include "game/cli/ExitCode.h"
 #include "game/cli/Progress.h"
+#include "game/cli/QualityOption.h"
 #include "game/level/LevelMemory.h"
 #include "game/platform/HeadlessContext.h"
 #include "game/play/PlayMode.h"
@@ -48,13 +50,14 @@ struct FrameOutcome {
 }  // namespace
 
 int replay_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--frames", "--out", "--threads", "--level"},
+    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality"},
               {"--headless", "--check", "--update-goldens", "--strict", "--exr"});
     if (args.positional().size() != 1) throw UsageError("replay takes one replay file");
     const fs::path path = args.positional()[0];
     const bool check = args.flag("--check");
     const bool update = args.flag("--update-goldens");
     const int threads = args.integer("--threads", 1, 1, 64);
+    const QualityChoice quality = quality_option(args);
     FrameSelection frames = args.value("--frames") ? FrameSelection::parse(*args.value("--frames")) : FrameSelection{};
 
     Replay replay = read_replay(path, ReadOptions{args.flag("--strict")});
@@ -72,7 +75,7 @@ int replay_command(const std::vector<std::string>& argv) {
                              std::to_string(total) + " ticks)");
 
     if (!args.flag("--headless")) {
-        if (display_available()) return play_replay_in_window(replay, session);
+        if (display_available()) return play_replay_in_window(replay, session, quality);
         std::cerr << "no display: replaying headless\n";
     }
 

@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -54,6 +55,8 @@ std::vector<std::string> hud_lines(const HudState& hud) {
     std::vector<std::string> lines;
     std::string flags;
     if (hud.paused) flags += "PAUSED  ";
+    if (hud.unfocused && !hud.paused) flags += "PAUSED (window not focused)  ";
+    if (hud.behind) flags += "BEHIND REAL TIME  ";
     if (hud.recording) flags += "REC  ";
     if (!hud.status.empty()) flags += hud.status;
     if (!flags.empty()) lines.push_back(flags);
@@ -61,6 +64,9 @@ std::vector<std::string> hud_lines(const HudState& hud) {
                            view_name(hud.view)));
     lines.push_back(format("wipers %s  rain %.0f%%", wiper_name(hud.wipers), double(hud.rain_intensity) * 100.0));
     lines.push_back(format("tick %llu  %.1f fps", static_cast<unsigned long long>(hud.tick), hud.fps));
+    if (!hud.quality.empty())
+        lines.push_back(format("quality %s  scale %.2f (%dx%d)", hud.quality.c_str(), double(hud.render_scale),
+                               hud.render_width, hud.render_height));
     double total_ms = 0.0;
     for (const effects::gl::PassTime& p : hud.passes) {
         lines.push_back(format("%-12s %6.2f ms", p.name.c_str(), p.average_ms));
@@ -82,18 +88,18 @@ std::vector<ParamGroup> group_params(const std::vector<effects::Param>& params) 
     return groups;
 }
 
-DebugUi::DebugUi(GLFWwindow* window) {
+DebugUi::DebugUi(GLFWwindow* window) : has_window_(window != nullptr) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // no imgui.ini dropped into the working directory
     ImGui::StyleColorsDark();
-    if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) {
+    if (has_window_ && !ImGui_ImplGlfw_InitForOpenGL(window, true)) {
         ImGui::DestroyContext();
         throw std::runtime_error("Dear ImGui: the GLFW backend failed to initialise");
     }
     if (!ImGui_ImplOpenGL3_Init("#version 450")) {
-        ImGui_ImplGlfw_Shutdown();
+        if (has_window_) ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
         throw std::runtime_error("Dear ImGui: the OpenGL 3 backend failed to initialise for GLSL 4.50");
     }
@@ -101,15 +107,23 @@ DebugUi::DebugUi(GLFWwindow* window) {
 
 DebugUi::~DebugUi() {
     ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
+    if (has_window_) ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
 }
 
 bool DebugUi::wants_keyboard() const { return ImGui::GetIO().WantTextInput; }
 
-void DebugUi::begin_frame() {
+void DebugUi::begin_frame(int width, int height) {
     ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
+    if (has_window_) {
+        ImGui_ImplGlfw_NewFrame();
+    } else {
+        ImGuiIO& io = ImGui::GetIO();
+        const auto now = std::chrono::steady_clock::now();
+        io.DisplaySize = ImVec2(float(width), float(height));
+        io.DeltaTime = std::max(1e-4f, std::chrono::duration<float>(now - last_frame_).count());
+        last_frame_ = now;
+    }
     ImGui::NewFrame();
 }
 
@@ -121,8 +135,9 @@ void DebugUi::draw_hud(const HudState& hud) {
                                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoInputs;
     if (ImGui::Begin("hud", nullptr, flags)) {
         const std::vector<std::string> lines = hud_lines(hud);
-        // The state line (PAUSED, REC, status) comes first when there is one and stands out.
-        const bool has_state_line = hud.paused || hud.recording || !hud.status.empty();
+        // The state line (PAUSED, BEHIND, REC, status) comes first when there is one and stands out.
+        const bool has_state_line =
+            hud.paused || hud.unfocused || hud.behind || hud.recording || !hud.status.empty();
         for (size_t i = 0; i < lines.size(); ++i) {
             const bool alert = has_state_line && i == 0;
             if (alert) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
@@ -133,22 +148,35 @@ void DebugUi::draw_hud(const HudState& hud) {
     ImGui::End();
 }
 
-void DebugUi::draw_debug_panel(effects::Renderer& renderer, bool* open) {
+bool DebugUi::draw_debug_panel(effects::Renderer& renderer, QualityChoice& quality, bool* open) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10.0f, viewport->WorkPos.y + 10.0f),
                             ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(380.0f, viewport->WorkSize.y * 0.8f), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Debug (F1)", open)) {
         ImGui::End();
-        return;
+        return false;
     }
+    bool quality_changed = false;
+    if (ImGui::BeginCombo("quality", std::string(quality_choice_name(quality)).c_str())) {
+        for (QualityChoice c : kQualityChoices) {
+            if (ImGui::Selectable(std::string(quality_choice_name(c)).c_str(), c == quality) && c != quality) {
+                quality = c;
+                quality_changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::Text("render scale %.2f (%dx%d)", double(renderer.render_scale()), renderer.targets().width(),
+                renderer.targets().height());
     bool profile = renderer.timing() == effects::gl::TimingMode::Profile;
-    if (ImGui::Checkbox("profile timing (glFinish per pass, F2)", &profile))
-        renderer.set_timing(profile ? effects::gl::TimingMode::Profile : effects::gl::TimingMode::GpuQueries);
+    if (ImGui::Checkbox("profile timing (glFinish around every pass, F2)", &profile))
+        renderer.set_timing(profile ? effects::gl::TimingMode::Profile : effects::gl::TimingMode::Sampled);
+    if (!profile) ImGui::TextDisabled("one pass measured a frame, in turn");
 
     if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("pass");
-        ImGui::TableSetupColumn("ms");
+        ImGui::TableSetupColumn("last ms");
         ImGui::TableSetupColumn("average ms");
         ImGui::TableHeadersRow();
         for (const effects::gl::PassTime& p : renderer.pass_times()) {
@@ -185,6 +213,7 @@ void DebugUi::draw_debug_panel(effects::Renderer& renderer, bool* open) {
         }
     }
     ImGui::End();
+    return quality_changed;
 }
 
 void DebugUi::end_frame() {

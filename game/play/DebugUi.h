@@ -1,6 +1,8 @@
 #pragma once
-// Dear ImGui in play mode only (headless frames stay free of UI): the HUD overlay that
-// is always shown and the F1 debug panel with pass times and the renderer's params.
+// Dear ImGui in the play loop only (replay and golden frames stay free of UI): the HUD
+// overlay that is always shown and the F1 debug panel with pass times, the quality and
+// the renderer's params.
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -8,6 +10,7 @@
 #include "effects/Renderer.h"
 #include "effects/gl/PassTimer.h"
 #include "effects/scene/ParamRegistry.h"
+#include "game/play/QualityChoice.h"
 #include "sim/player/Player.h"
 #include "sim/world/World.h"
 
@@ -24,7 +27,12 @@ struct HudState {
     uint64_t tick = 0;
     double fps = 0.0;
     bool paused = false;
+    bool unfocused = false;  // idle because the window lost the keyboard focus
+    bool behind = false;     // the world fell behind real time (frames too slow to keep up)
     bool recording = false;
+    std::string quality;  // "auto", "low", ...; empty: no quality line
+    float render_scale = 1.0f;
+    int render_width = 0, render_height = 0;  // the 3D scene's internal resolution
     std::string status;  // e.g. "replay ended"; empty for none
     std::vector<effects::gl::PassTime> passes;
 };
@@ -46,10 +54,11 @@ struct ParamGroup {
 // Groups in the order their first param was registered.
 std::vector<ParamGroup> group_params(const std::vector<effects::Param>& params);
 
-// Owns the ImGui context and its GLFW and OpenGL 3 backends for one window.
+// Owns the ImGui context and its GLFW and OpenGL 3 backends for one window, or only the
+// OpenGL 3 one for an offscreen target (no window: no input, the size set each frame).
 class DebugUi {
 public:
-    // Throws std::runtime_error if a backend fails to initialise.
+    // `window` may be null. Throws std::runtime_error if a backend fails to initialise.
     explicit DebugUi(GLFWwindow* window);
     ~DebugUi();
     DebugUi(const DebugUi&) = delete;
@@ -58,13 +67,18 @@ public:
     // True while an ImGui widget takes typed text: game keys are not the player's then.
     bool wants_keyboard() const;
 
-    void begin_frame();
+    // `width` x `height`: the target's pixels (a window's backend finds its own).
+    void begin_frame(int width, int height);
     void draw_hud(const HudState& hud);
-    // Pass times, the timing mode and every registered param; `open` is cleared by the
-    // panel's close button.
-    void draw_debug_panel(effects::Renderer& renderer, bool* open);
+    // Pass times, the timing mode, the quality and every registered param; `open` is
+    // cleared by the panel's close button. Returns true when `quality` was changed.
+    bool draw_debug_panel(effects::Renderer& renderer, QualityChoice& quality, bool* open);
     // Draws the UI into the bound draw framebuffer.
     void end_frame();
+
+private:
+    bool has_window_;
+    std::chrono::steady_clock::time_point last_frame_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace game

@@ -39,6 +39,13 @@ sim::TickInput input_from_keys(const std::function<bool(int glfw_key)>& down) {
     return in;
 }
 
+std::optional<sim::Control> control_for_key(int glfw_key) {
+    for (const KeyBinding& b : kBindings)
+        for (int key : b.keys)
+            if (key != 0 && key == glfw_key) return b.control;
+    return std::nullopt;
+}
+
 std::optional<UiAction> ui_action_for_key(int glfw_key) {
     switch (glfw_key) {
         case GLFW_KEY_P: return UiAction::Pause;

@@ -22,6 +22,9 @@ std::span<const KeyBinding> key_bindings();
 // passes glfwGetKey, tests pass a set of keys.
 sim::TickInput input_from_keys(const std::function<bool(int glfw_key)>& down);
 
+// The control `glfw_key` is bound to, if any.
+std::optional<sim::Control> control_for_key(int glfw_key);
+
 // Keys that work on the program, acted on once per press.
 enum class UiAction { Pause, Screenshot, ToggleDebugPanel, ToggleProfileTiming, Quit };
 

@@ -45,9 +45,15 @@ Window::Window(const Options& options) {
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(options.vsync ? 1 : 0);
     glfwSetWindowUserPointer(window_, this);
-    glfwSetInputMode(window_, GLFW_STICKY_KEYS, GLFW_TRUE);
-    // Installed before Dear ImGui's, which chains to it.
+    // Installed before Dear ImGui's, which chains to them.
     glfwSetKeyCallback(window_, on_key);
+    glfwSetWindowFocusCallback(window_, on_focus);
+    glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double, double) { mark_activity(w); });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int, int) { mark_activity(w); });
+    glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double) { mark_activity(w); });
+    glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned int) { mark_activity(w); });
+    glfwSetWindowRefreshCallback(window_, mark_activity);
+    glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { mark_activity(w); });
 }
 
 Window::~Window() {
@@ -70,6 +76,14 @@ Window::Size Window::framebuffer_size() const {
 
 bool Window::key_down(int glfw_key) const { return glfwGetKey(window_, glfw_key) == GLFW_PRESS; }
 
+bool Window::minimised() const { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) != 0; }
+
+bool Window::take_activity() {
+    const bool any = activity_;
+    activity_ = false;
+    return any;
+}
+
 std::vector<int> Window::take_key_presses() {
     std::vector<int> out;
     out.swap(presses_);
@@ -78,7 +92,20 @@ std::vector<int> Window::take_key_presses() {
 
 void Window::on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
     auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
-    if (self && action == GLFW_PRESS && key != GLFW_KEY_UNKNOWN) self->presses_.push_back(key);
+    if (!self) return;
+    self->activity_ = true;
+    if (action == GLFW_PRESS && key != GLFW_KEY_UNKNOWN) self->presses_.push_back(key);
+}
+
+void Window::on_focus(GLFWwindow* window, int focused) {
+    auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+    if (!self) return;
+    self->focused_ = focused != 0;
+    self->activity_ = true;
+}
+
+void Window::mark_activity(GLFWwindow* window) {
+    if (auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window))) self->activity_ = true;
 }
 
 }  // namespace game

@@ -37,17 +37,27 @@ public:
     // Pixels of the default framebuffer; 0 x 0 while minimised.
     Size framebuffer_size() const;
 
-    // Whether `glfw_key` is down, or was pressed since it was last asked about (sticky
-    // keys): a tap shorter than a tick still reaches the sim.
+    // Whether `glfw_key` is down now (a tap between two polls shows only as a press).
     bool key_down(int glfw_key) const;
     // Keys pressed (not auto-repeated) since the last call, in order.
     std::vector<int> take_key_presses();
+    // False from losing the keyboard focus until it comes back. Starts true: a window
+    // no window manager ever focused (Xvfb) still plays.
+    bool focused() const { return focused_; }
+    bool minimised() const;
+    // Whether any input or window event arrived since the last call: a paused game
+    // draws a frame only then (the debug panel still answers the mouse).
+    bool take_activity();
 
 private:
     static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+    static void on_focus(GLFWwindow* window, int focused);
+    static void mark_activity(GLFWwindow* window);
 
     GLFWwindow* window_ = nullptr;
     std::vector<int> presses_;
+    bool focused_ = true;
+    bool activity_ = false;
 };
 
 }  // namespace game

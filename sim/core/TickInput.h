@@ -24,6 +24,12 @@ enum class Control : uint16_t {
 };
 inline constexpr int kControlCount = 12;
 inline constexpr uint16_t kAllControls = (1u << kControlCount) - 1;
+// The controls that act once on their rising edge; the rest (throttle, brake,
+// steering) act for as long as they are held.
+inline constexpr uint16_t kOneShotControls =
+    uint16_t(Control::SwitchVehicle) | uint16_t(Control::ThrowHeavy) | uint16_t(Control::ThrowLight) |
+    uint16_t(Control::Fire) | uint16_t(Control::Camera) | uint16_t(Control::Wipers) |
+    uint16_t(Control::RainUp) | uint16_t(Control::RainDown);
 
 // Script / CLI names, index i names bit i.
 inline constexpr std::string_view kControlNames[kControlCount] = {

@@ -1,0 +1,213 @@
+#include "game/play/PlayLoop.h"
+
+#include <cstdio>
+#include <ctime>
+#include <iostream>
+
+#include "effects/gl/Gl.h"
+#include "game/capture/ImageFiles.h"
+#include "game/capture/Readback.h"
+#include "game/play/FixedStepClock.h"
+#include "game/play/KeyboardInput.h"
+
+namespace game {
+
+namespace fs = std::filesystem;
+
+namespace {
+// How long an idle loop sleeps waiting for an event before it looks again.
+constexpr double kIdleWaitSeconds = 0.25;
+// How long the HUD keeps saying "behind real time" after the spiral cap dropped time.
+constexpr auto kBehindShownFor = std::chrono::seconds(1);
+}  // namespace
+
+fs::path screenshot_path(std::chrono::system_clock::time_point when) {
+    const std::time_t seconds = std::chrono::system_clock::to_time_t(when);
+    const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(when.time_since_epoch()).count() % 1000;
+    std::tm local{};
+    localtime_r(&seconds, &local);
+    char name[64];
+    std::strftime(name, sizeof name, "spindrift_%Y%m%d-%H%M%S", &local);
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, "-%03d.png", int(ms));
+    return fs::path("screenshots") / (std::string(name) + suffix);
+}
+
+void PlayLoop::FpsMeter::frame(Clock::time_point now) {
+    ++frames_;
+    const double span_s = std::chrono::duration<double>(now - since_).count();
+    if (span_s >= 0.5) {
+        fps_ = frames_ / span_s;
+        frames_ = 0;
+        since_ = now;
+    }
+}
+
+PlayLoop::PlayLoop(GameSession& session, Screen& screen, LoopOptions options)
+    : session_(session),
+      screen_(screen),
+      options_(options),
+      renderer_(session.level.scene, *session.world),
+      ui_(screen.glfw_window()) {
+    // GL_TIME_ELAPSED queries read ~0 on llvmpipe: measure one pass a frame exactly.
+    renderer_.set_timing(effects::gl::TimingMode::Sampled);
+    set_quality(options.quality);
+}
+
+void PlayLoop::set_quality(QualityChoice quality) {
+    quality_ = quality;
+    renderer_.set_quality(preset_of(quality));
+    resolution_.reset();
+    if (quality == QualityChoice::Auto) {
+        ResolutionController::Options o;
+        o.start_scale = renderer_.render_scale();
+        resolution_.emplace(o);
+        renderer_.set_render_scale(resolution_->scale());
+    }
+}
+
+void PlayLoop::run(const LoopHooks& hooks) {
+    sim::World& world = *session_.world;
+    FixedStepClock clock(sim::kTickRateHz);
+    const bool keyboard_drives = !hooks.next_input;
+    bool input_ended = false;
+    bool idle_frame_shown = false;
+    // The first frame compiles llvmpipe's shader variants: real time, frame times and
+    // the resolution controller start after it.
+    bool first_frame = true;
+    Clock::time_point last_shown{};  // the previous frame, when it was a playing one; else zero
+    auto last = Clock::now();
+    while (!screen_.should_close()) {
+        const Screen::Size size = screen_.size();
+        const bool minimised = size.width <= 0 || size.height <= 0;
+        // Paused, minimised, unfocused, or a replay at its end: nothing changes on screen.
+        const bool was_idle =
+            paused_ || minimised || input_ended || (options_.pause_when_unfocused && !screen_.focused());
+        // Idle with its frame shown (or nothing to show): sleep until something happens.
+        screen_.handle_events(was_idle && (idle_frame_shown || minimised) ? kIdleWaitSeconds : 0.0);
+        for (int key : screen_.take_key_presses()) on_key_press(key, keyboard_drives);
+        const bool activity = screen_.take_activity();
+        if (ui_.wants_keyboard()) {
+            input_.clear();
+            input_.set_down({});
+        } else {
+            input_.set_down(input_from_keys([this](int key) { return screen_.key_down(key); }));
+        }
+        const bool idle =
+            paused_ || minimised || input_ended || (options_.pause_when_unfocused && !screen_.focused());
+
+        const auto now = Clock::now();
+        const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(now - last);
+        last = now;
+        FrameRecord record;
+        if (idle || first_frame) {
+            clock.reset();
+            input_.clear();
+        } else {
+            for (int n = clock.advance(elapsed); n > 0; --n) {
+                std::optional<sim::TickInput> input = keyboard_drives ? input_.next_tick() : hooks.next_input();
+                if (!input) {
+                    input_ended = true;
+                    break;
+                }
+                const sim::TickInput applied = sim::quantise(*input);
+                world.step(applied);
+                hooks.after_tick(world, applied);
+                ++record.ticks;
+            }
+            record.dropped = clock.dropped();
+            if (record.dropped.count() > 0) behind_until_ = now + kBehindShownFor;
+        }
+        if (input_ended && options_.end_with_input) break;
+        if (minimised || (idle && idle_frame_shown && !activity && !screenshot_wanted_)) {
+            last_shown = {};
+            continue;
+        }
+
+        record.render_scale = renderer_.render_scale();
+        draw_frame(hooks, screen_.size(), clock.alpha());
+        screen_.present();
+        const auto shown = Clock::now();
+        fps_.frame(shown);
+        idle_frame_shown = idle;
+        if (first_frame) last = shown;
+        if (last_shown != Clock::time_point{} && !idle && !first_frame) {
+            record.frame_ms = std::chrono::duration<double, std::milli>(shown - last_shown).count();
+            if (resolution_) renderer_.set_render_scale(resolution_->frame(record.frame_ms));
+            if (hooks.after_frame) hooks.after_frame(record);
+        }
+        first_frame = false;
+        last_shown = idle ? Clock::time_point{} : shown;
+    }
+}
+
+void PlayLoop::on_key_press(int key, bool keyboard_drives) {
+    std::optional<UiAction> action = ui_action_for_key(key);
+    if (!action) {
+        // Controls pressed while paused are not kept for later.
+        std::optional<sim::Control> control = control_for_key(key);
+        if (control && keyboard_drives && !paused_ && !ui_.wants_keyboard()) input_.press(*control);
+        return;
+    }
+    // Typing into an ImGui field: P and Esc belong to the field.
+    if (ui_.wants_keyboard() && (*action == UiAction::Pause || *action == UiAction::Quit)) return;
+    switch (*action) {
+        case UiAction::Pause: paused_ = !paused_; break;
+        case UiAction::Screenshot: screenshot_wanted_ = true; break;
+        case UiAction::ToggleDebugPanel: panel_open_ = !panel_open_; break;
+        case UiAction::ToggleProfileTiming:
+            renderer_.set_timing(renderer_.timing() == effects::gl::TimingMode::Profile
+                                     ? effects::gl::TimingMode::Sampled
+                                     : effects::gl::TimingMode::Profile);
+            break;
+        case UiAction::Quit: screen_.request_close(); break;
+    }
+}
+
+void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, [[maybe_unused]] double alpha) {
+    const sim::World& world = *session_.world;
+    // `alpha` is how far real time is past the world's last tick, in ticks [0, 1): the
+    // renderer is to draw the world interpolated that far between its last two ticks.
+    renderer_.render(world, effects::RenderOutput{screen_.framebuffer(), size.width, size.height});
+
+    // The UI goes on top of the finished frame at the output's size.
+    glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
+    glViewport(0, 0, size.width, size.height);
+    HudState hud = hud_state(world);
+    hud.fps = fps_.fps();
+    hud.paused = paused_;
+    hud.unfocused = options_.pause_when_unfocused && !screen_.focused();
+    hud.behind = Clock::now() < behind_until_;
+    hud.recording = hooks.recording();
+    hud.status = hooks.status();
+    hud.passes = renderer_.pass_times();
+    hud.quality = quality_choice_name(quality_);
+    hud.render_scale = renderer_.render_scale();
+    hud.render_width = renderer_.targets().width();
+    hud.render_height = renderer_.targets().height();
+    ui_.begin_frame(size.width, size.height);
+    ui_.draw_hud(hud);
+    if (panel_open_) {
+        QualityChoice quality = quality_;
+        if (ui_.draw_debug_panel(renderer_, quality, &panel_open_)) set_quality(quality);
+    }
+    ui_.end_frame();
+
+    if (screenshot_wanted_) {
+        screenshot_wanted_ = false;
+        take_screenshot(size);
+    }
+}
+
+void PlayLoop::take_screenshot(Screen::Size size) {
+    const fs::path path = screenshot_path(std::chrono::system_clock::now());
+    try {
+        write_png(path, read_framebuffer_rgba8(screen_.framebuffer(), size.width, size.height));
+        std::cout << "screenshot: " << path.string() << std::endl;
+    } catch (const std::exception& e) {
+        // A full disk should not end the game.
+        std::cerr << "screenshot failed: " << e.what() << std::endl;
+    }
+}
+
+}  // namespace game

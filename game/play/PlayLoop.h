@@ -1,0 +1,102 @@
+#pragma once
+// The frame loop every interactive command runs (play, replay in a window, timedemo):
+// real time becomes fixed 60 Hz ticks, the renderer draws into a Screen, Dear ImGui
+// draws the HUD and the debug panel on top.
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "effects/Renderer.h"
+#include "effects/gl/DebugOutput.h"
+#include "game/play/DebugUi.h"
+#include "game/play/InputQueue.h"
+#include "game/play/QualityChoice.h"
+#include "game/play/ResolutionController.h"
+#include "game/play/Screen.h"
+#include "game/session/GameSession.h"
+
+namespace game {
+
+// Where F12 writes a screenshot taken at `when` (local time, to the millisecond):
+// screenshots/spindrift_YYYYMMDD-HHMMSS-mmm.png.
+std::filesystem::path screenshot_path(std::chrono::system_clock::time_point when);
+
+// One frame the loop drew while playing (not the first one, nor idle ones).
+struct FrameRecord {
+    double frame_ms = 0.0;       // wall time since the previous frame was shown
+    float render_scale = 1.0f;   // the 3D scene's scale it was drawn at
+    int ticks = 0;               // ticks run before it
+    std::chrono::nanoseconds dropped{0};  // real time the spiral cap dropped before it
+};
+
+// What drives a session: where each tick's input comes from and what happens after
+// each tick and frame.
+struct LoopHooks {
+    // The input for the next tick, or nothing once it has run out. Unset: the keyboard.
+    std::function<std::optional<sim::TickInput>()> next_input;
+    // Called after each tick with the (quantised) input that was applied.
+    std::function<void(const sim::World&, sim::TickInput)> after_tick;
+    // A line for the HUD (recording state, replay progress, a desync).
+    std::function<std::string()> status;
+    std::function<bool()> recording;
+    std::function<void(const FrameRecord&)> after_frame;  // may be unset
+};
+
+struct LoopOptions {
+    QualityChoice quality = QualityChoice::Auto;
+    // A game idles while its window has lost the focus; a timedemo does not.
+    bool pause_when_unfocused = true;
+    // Stop once the input has run out (timedemo); otherwise the last frame stays up.
+    bool end_with_input = false;
+};
+
+class PlayLoop {
+public:
+    // The screen's GL context is current. Throws std::runtime_error if the UI cannot start.
+    PlayLoop(GameSession& session, Screen& screen, LoopOptions options);
+
+    // Until the screen closes (Esc, the window's close button), or the input ends with
+    // `end_with_input`.
+    void run(const LoopHooks& hooks);
+
+    void set_quality(QualityChoice quality);
+    const effects::Renderer& renderer() const { return renderer_; }
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    // Frames a second, over half-second spans.
+    class FpsMeter {
+    public:
+        void frame(Clock::time_point now);
+        double fps() const { return fps_; }
+
+    private:
+        Clock::time_point since_ = Clock::now();
+        int frames_ = 0;
+        double fps_ = 0.0;
+    };
+
+    void on_key_press(int key, bool keyboard_drives);
+    void draw_frame(const LoopHooks& hooks, Screen::Size size, double alpha);
+    void take_screenshot(Screen::Size size);
+
+    GameSession& session_;
+    Screen& screen_;
+    LoopOptions options_;
+    effects::gl::DebugOutput debug_output_;  // driver errors to stderr while the context lives
+    effects::Renderer renderer_;
+    DebugUi ui_;
+    InputQueue input_;
+    QualityChoice quality_ = QualityChoice::Auto;
+    std::optional<ResolutionController> resolution_;  // auto quality only
+    FpsMeter fps_;
+    bool paused_ = false;
+    bool panel_open_ = false;
+    bool screenshot_wanted_ = false;
+    Clock::time_point behind_until_{};  // the HUD says "behind real time" until then
+};
+
+}  // namespace game

@@ -1,0 +1,49 @@
+#include "game/play/ResolutionController.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace game {
+
+ResolutionController::ResolutionController(const Options& options) : options_(options) {
+    if (!(options.min_scale > 0.0f && options.min_scale <= options.max_scale && options.step > 0.0f &&
+          options.budget_ms > 0.0 && options.down_window >= 2 && options.up_frames >= 1))
+        throw std::invalid_argument("ResolutionController: bad options");
+    scale_ = snap(options.start_scale);
+}
+
+float ResolutionController::snap(float scale) const {
+    const float steps = std::floor(scale / options_.step + 1e-3f);
+    return std::clamp(steps * options_.step, options_.min_scale, options_.max_scale);
+}
+
+float ResolutionController::frame(double frame_ms) {
+    if (!std::isfinite(frame_ms) || frame_ms < 0.0) return scale_;
+    recent_.push_back(frame_ms);
+    if (recent_.size() > options_.down_window) recent_.pop_front();
+    under_run_ = frame_ms < options_.up_fraction * options_.budget_ms ? under_run_ + 1 : 0;
+
+    float next = scale_;
+    if (recent_.size() == options_.down_window) {
+        // The mean without the worst frame: one hitch (a resize, a page fault) is no trend.
+        const double sum = std::accumulate(recent_.begin(), recent_.end(), 0.0);
+        const double worst = *std::max_element(recent_.begin(), recent_.end());
+        const double typical = (sum - worst) / double(recent_.size() - 1);
+        if (typical > options_.budget_ms) {
+            // Aim a little under the budget, and always at least one step down.
+            const float aim = scale_ * float(std::sqrt(0.9 * options_.budget_ms / typical));
+            next = std::min(snap(aim), snap(scale_ - options_.step));
+        }
+    }
+    if (next == scale_ && under_run_ >= options_.up_frames) next = snap(scale_ + options_.step);
+    if (next != scale_) {
+        scale_ = next;
+        recent_.clear();
+        under_run_ = 0;
+    }
+    return scale_;
+}
+
+}  // namespace game

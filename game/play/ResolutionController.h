@@ -1,0 +1,44 @@
+#pragma once
+// Dynamic resolution for `--quality auto`: the 3D scene's render scale chosen from the
+// last frames' times, to hold a frame-time budget.
+#include <cstddef>
+#include <deque>
+
+namespace game {
+
+// Pure logic: fed one frame time per frame, it answers the render scale for the next.
+// Slow frames bring the scale down fast (a few frames, in a step sized by how far over
+// they are: pixels cost about the scale squared); a long run of frames well under the
+// budget brings it up one small step. Between the two thresholds it holds, and after a
+// change it first measures frames at the new scale, so it never changes every frame.
+class ResolutionController {
+public:
+    struct Options {
+        double budget_ms = 30.0;       // a 30 fps target with a little to spare
+        double up_fraction = 0.7;      // "well under": frames below this part of the budget
+        float min_scale = 0.4f;
+        float max_scale = 1.0f;
+        float start_scale = 0.75f;     // medium's
+        float step = 0.05f;            // scales are multiples of this
+        size_t down_window = 6;        // frames judged for a step down (the worst one ignored)
+        size_t up_frames = 45;         // frames in a row well under the budget for a step up
+    };
+
+    ResolutionController() : ResolutionController(Options{}) {}
+    explicit ResolutionController(const Options& options);
+
+    // The time of the frame just drawn at scale(); returns the scale for the next one.
+    float frame(double frame_ms);
+    float scale() const { return scale_; }
+    const Options& options() const { return options_; }
+
+private:
+    float snap(float scale) const;
+
+    Options options_;
+    float scale_;
+    std::deque<double> recent_;  // frame times at the current scale, newest last
+    size_t under_run_ = 0;       // frames in a row well under the budget
+};
+
+}  // namespace game

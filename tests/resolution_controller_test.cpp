@@ -1,0 +1,119 @@
+// Dynamic resolution (`--quality auto`) on recorded frame-time sequences:
+// game/play/ResolutionController.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "game/play/ResolutionController.h"
+
+namespace {
+
+// Feeds `ms` frame by frame; returns the scale after each.
+std::vector<float> feed(game::ResolutionController& c, const std::vector<double>& ms) {
+    std::vector<float> out;
+    for (double m : ms) out.push_back(c.frame(m));
+    return out;
+}
+
+std::vector<double> repeat(double ms, int n) { return std::vector<double>(size_t(n), ms); }
+
+int changes(const std::vector<float>& scales, float start) {
+    int n = 0;
+    for (float s : scales) {
+        n += s != start;
+        start = s;
+    }
+    return n;
+}
+
+// A frame whose time follows the pixels: `fixed_ms` plus `full_ms` at scale 1.
+double modelled_ms(float scale, double fixed_ms, double full_ms) { return fixed_ms + full_ms * scale * scale; }
+
+}  // namespace
+
+TEST(ResolutionController, StartsAtMediumsScaleAndHoldsInsideTheBand) {
+    game::ResolutionController c;
+    EXPECT_FLOAT_EQ(c.scale(), 0.75f);
+    // 22..29 ms: under the 30 ms budget but not well under (21 ms): no change at all.
+    std::vector<double> ms;
+    for (int i = 0; i < 600; ++i) ms.push_back(22.0 + (i * 7) % 8);
+    for (float s : feed(c, ms)) EXPECT_FLOAT_EQ(s, 0.75f);
+}
+
+TEST(ResolutionController, SlowFramesBringTheScaleDownWithinAFewFrames) {
+    game::ResolutionController c;
+    std::vector<float> scales = feed(c, repeat(60.0, 8));
+    EXPECT_LT(scales.back(), 0.75f);
+    // Twice the budget: pixels cost about scale^2, so one step goes about sqrt(2) down.
+    EXPECT_LE(scales.back(), 0.55f);
+    // Still slow at the new scale: down again, to the floor and no further.
+    scales = feed(c, repeat(60.0, 100));
+    EXPECT_FLOAT_EQ(scales.back(), 0.4f);
+    for (float s : scales) EXPECT_GE(s, 0.4f);
+}
+
+TEST(ResolutionController, FastFramesBringItUpSlowlyToTheTop) {
+    game::ResolutionController c;
+    std::vector<float> scales = feed(c, repeat(10.0, 44));
+    EXPECT_FLOAT_EQ(scales.back(), 0.75f);  // not before 45 fast frames in a row
+    scales = feed(c, repeat(10.0, 1));
+    EXPECT_FLOAT_EQ(scales.back(), 0.8f);  // one step
+    scales = feed(c, repeat(10.0, 2000));
+    EXPECT_FLOAT_EQ(scales.back(), 1.0f);
+    for (float s : scales) EXPECT_LE(s, 1.0f);
+    // Up one step at a time, never two in fewer than 45 frames.
+    EXPECT_LE(changes(scales, 0.8f), 4);
+}
+
+TEST(ResolutionController, OneHitchIsNoTrend) {
+    game::ResolutionController c;
+    std::vector<double> ms = repeat(25.0, 40);
+    ms[20] = 400.0;  // a resize, a page fault
+    for (float s : feed(c, ms)) EXPECT_FLOAT_EQ(s, 0.75f);
+}
+
+TEST(ResolutionController, AlternatingTimesDoNotMakeItOscillate) {
+    // Mean under the budget, never well under: it holds.
+    game::ResolutionController c;
+    std::vector<double> ms;
+    for (int i = 0; i < 1000; ++i) ms.push_back(i % 2 ? 15.0 : 40.0);
+    EXPECT_EQ(changes(feed(c, ms), 0.75f), 0);
+    // Mean over the budget, half the frames well under: down only, then it stays.
+    game::ResolutionController d;
+    ms.clear();
+    for (int i = 0; i < 1000; ++i) ms.push_back(i % 2 ? 10.0 : 70.0);
+    std::vector<float> scales = feed(d, ms);
+    for (size_t i = 1; i < scales.size(); ++i) EXPECT_LE(scales[i], scales[i - 1]) << "frame " << i;
+    EXPECT_FLOAT_EQ(scales.back(), 0.4f);
+}
+
+TEST(ResolutionController, SettlesWhereTheModelledFramesMeetTheBudget) {
+    // 8 ms that do not scale plus 60 ms at full resolution: 30 ms at scale 0.6.
+    game::ResolutionController c;
+    float scale = c.scale();
+    std::vector<float> history;
+    for (int i = 0; i < 3000; ++i) {
+        scale = c.frame(modelled_ms(scale, 8.0, 60.0));
+        history.push_back(scale);
+    }
+    EXPECT_GE(scale, 0.4f);
+    EXPECT_LE(modelled_ms(scale, 8.0, 60.0), 30.0);
+    // Settled: it does not step back and forth every frame, nor keep changing.
+    int late_changes = 0;
+    for (size_t i = 2000; i < history.size(); ++i) late_changes += history[i] != history[i - 1];
+    EXPECT_LE(late_changes, 1000 / 45 + 1);
+    for (size_t i = 2; i < history.size(); ++i)
+        EXPECT_FALSE(history[i] != history[i - 1] && history[i - 1] != history[i - 2]) << "changed twice in a row at " << i;
+}
+
+TEST(ResolutionController, BadTimesAreIgnoredAndBadOptionsRefused) {
+    game::ResolutionController c;
+    for (double bad : {-1.0, std::nan(""), double(INFINITY)}) EXPECT_FLOAT_EQ(c.frame(bad), 0.75f);
+    game::ResolutionController::Options o;
+    o.min_scale = 0.0f;
+    EXPECT_THROW(game::ResolutionController{o}, std::invalid_argument);
+    o = {};
+    o.start_scale = 2.0f;
+    EXPECT_FLOAT_EQ(game::ResolutionController(o).scale(), 1.0f);
+}
