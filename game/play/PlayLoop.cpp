@@ -68,6 +68,7 @@ void PlayLoop::set_quality(QualityChoice quality) {
 
 void PlayLoop::run(const LoopHooks& hooks) {
     sim::World& world = *session_.world;
+    previous_poses_ = effects::capture_poses(world);
     FixedStepClock clock(sim::kTickRateHz);
     const bool keyboard_drives = !hooks.next_input;
     bool input_ended = false;
@@ -111,6 +112,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
                     break;
                 }
                 const sim::TickInput applied = sim::quantise(*input);
+                previous_poses_ = effects::capture_poses(world);
                 world.step(applied);
                 hooks.after_tick(world, applied);
                 ++record.ticks;
@@ -164,11 +166,14 @@ void PlayLoop::on_key_press(int key, bool keyboard_drives) {
     }
 }
 
-void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, [[maybe_unused]] double alpha) {
+void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alpha) {
     const sim::World& world = *session_.world;
-    // `alpha` is how far real time is past the world's last tick, in ticks [0, 1): the
-    // renderer is to draw the world interpolated that far between its last two ticks.
-    renderer_.render(world, effects::RenderOutput{screen_.framebuffer(), size.width, size.height});
+    // `alpha` is how far real time is past the world's last tick, in ticks [0, 1): what
+    // moves is drawn that far between its last two ticks, so motion is smooth at any
+    // frame rate (and a tick behind: the price of never guessing ahead).
+    const effects::FramePoses poses =
+        effects::interpolate(previous_poses_, effects::capture_poses(world), float(alpha));
+    renderer_.render(world, effects::RenderOutput{screen_.framebuffer(), size.width, size.height}, poses);
 
     // The UI goes on top of the finished frame at the output's size.
     glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());

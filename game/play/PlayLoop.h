@@ -92,6 +92,7 @@ private:
     InputQueue input_;
     QualityChoice quality_ = QualityChoice::Auto;
     std::optional<ResolutionController> resolution_;  // auto quality only
+    effects::FramePoses previous_poses_;  // the world's moving things one tick before its last
     FpsMeter fps_;
     bool paused_ = false;
     bool panel_open_ = false;
