@@ -39,11 +39,33 @@ Model make_terrain_model(const sim::Terrain& terrain, float spacing_m) {
             m.roughness = 0.9f;
             for (size_t j = j0; j <= j1; ++j)
                 for (size_t i = i0; i <= i1; ++i) m.vertices.push_back(vertex(xs[i], zs[j]));
-            for (size_t j = 0; j + 1 < j1 - j0 + 1; ++j)
-                for (size_t i = 0; i + 1 < w; ++i) {
-                    uint32_t a = uint32_t(j * w + i), b = a + 1, c = uint32_t(a + w), d = c + 1;
-                    m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
-                }
+            const bool flat = std::all_of(m.vertices.begin(), m.vertices.end(), [&](const MeshVertex& v) {
+                return v.position.y == m.vertices.front().position.y && v.normal == glm::vec3(0.0f, 1.0f, 0.0f);
+            });
+            if (flat) {
+                // Level ground: a fan from the centre to the border's vertices, the same as
+                // the grid's pixel for pixel but an eighth of its triangles (every one is
+                // set up on the CPU). The border keeps every vertex: no T-junctions.
+                const size_t h = j1 - j0 + 1;
+                std::vector<uint32_t> ring;
+                for (size_t i = 0; i + 1 < w; ++i) ring.push_back(uint32_t(i));
+                for (size_t j = 0; j + 1 < h; ++j) ring.push_back(uint32_t(j * w + w - 1));
+                for (size_t i = w - 1; i > 0; --i) ring.push_back(uint32_t((h - 1) * w + i));
+                for (size_t j = h - 1; j > 0; --j) ring.push_back(uint32_t(j * w));
+                MeshVertex centre = m.vertices.front();
+                centre.position.x = 0.5f * (xs[i0] + xs[i1]);
+                centre.position.z = 0.5f * (zs[j0] + zs[j1]);
+                const uint32_t c = uint32_t(m.vertices.size());
+                m.vertices.push_back(centre);
+                for (size_t k = 0; k < ring.size(); ++k)
+                    m.indices.insert(m.indices.end(), {c, ring[(k + 1) % ring.size()], ring[k]});
+            } else {
+                for (size_t j = 0; j + 1 < j1 - j0 + 1; ++j)
+                    for (size_t i = 0; i + 1 < w; ++i) {
+                        uint32_t a = uint32_t(j * w + i), b = a + 1, c = uint32_t(a + w), d = c + 1;
+                        m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
+                    }
+            }
             tiles.push_back(std::move(m));
         }
     Model model;
