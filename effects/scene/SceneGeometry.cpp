@@ -64,12 +64,35 @@ void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
 
 void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const FramePoses& poses, Use use,
                          const Frustum& view) const {
-    const bool depth_only = use == Use::ShadowCasters;
+    const bool depth_only = use != Use::Shading;
     auto material = [&](glm::vec4 tint) {
         if (!depth_only) p.set("u_tint", tint);
     };
     p.use();
     material(glm::vec4(1.0f));
+    if (use != Use::StillShadowCasters) draw_moving(p, poses, depth_only, view);
+    if (use == Use::MovingShadowCasters) return;
+    material(glm::vec4(1.0f));
+    for (size_t i = 0; i < desc_.props.size(); ++i) {
+        if (view.outside(prop_bounds_[i].first, prop_bounds_[i].second)) continue;
+        const PropInstance& inst = desc_.props[i];
+        place(p, inst.transform, depth_only);
+        models_[size_t(inst.model)]->draw(p, depth_only);
+    }
+
+    // A level stretch of ground shades nothing: a ray rising from anything above the
+    // ground towards the sun can only meet the ground where it rises. Left out of
+    // the shadow map, it saves the raster of most of the map and cannot self-shadow.
+    ground.use();
+    place(ground, glm::mat4(1.0f), depth_only);
+    terrain_.draw_visible(ground, depth_only, view, glm::mat4(1.0f), depth_only);
+}
+
+void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, bool depth_only,
+                                const Frustum& view) const {
+    auto material = [&](glm::vec4 tint) {
+        if (!depth_only) p.set("u_tint", tint);
+    };
     if (desc_.car_model >= 0) {
         // Wheels and hubcaps (meshes "wheel_fl", "hubcap_rr", ...) turn
         // about their axle (model z) and the front ones steer about their vertical.
@@ -96,20 +119,6 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
         place(p, m, depth_only);
         sphere_.draw(p, depth_only);
     }
-    material(glm::vec4(1.0f));
-    for (size_t i = 0; i < desc_.props.size(); ++i) {
-        if (view.outside(prop_bounds_[i].first, prop_bounds_[i].second)) continue;
-        const PropInstance& inst = desc_.props[i];
-        place(p, inst.transform, depth_only);
-        models_[size_t(inst.model)]->draw(p, depth_only);
-    }
-
-    // A level stretch of ground shades nothing: a ray rising from anything above the
-    // ground towards the sun can only meet the ground where it rises. Left out of
-    // the shadow map, it saves the raster of most of the map and cannot self-shadow.
-    ground.use();
-    place(ground, glm::mat4(1.0f), depth_only);
-    terrain_.draw_visible(ground, depth_only, view, glm::mat4(1.0f), depth_only);
 }
 
 }  // namespace effects

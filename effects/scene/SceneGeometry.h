@@ -19,8 +19,10 @@ public:
 
     // What a draw is for: shading (the terrain through `ground`, the rest through
     // `objects`; sets u_model, u_normal_matrix, u_tint and the materials per draw), or
-    // the sun's shadow casters (depth only, one program; level ground is left out).
-    enum class Use { Shading, ShadowCasters };
+    // the sun's shadow casters (depth only, one program): those that stay put (props and
+    // the ground's relief; level ground is left out) or those that move (vehicles,
+    // thrown objects).
+    enum class Use { Shading, StillShadowCasters, MovingShadowCasters };
     // What `view` can see, nearest kinds first (the vehicles, thrown objects, props,
     // then the ground) so that the early depth test spares hidden pixels their shading.
     void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
@@ -35,6 +37,9 @@ public:
     const GpuModel& sea() const { return sea_; }
 
 private:
+    // The car, the boat and the thrown objects.
+    void draw_moving(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view) const;
+
     const SceneDesc& desc_;
     const sim::LevelDesc& level_;
     std::vector<std::unique_ptr<GpuModel>> models_;

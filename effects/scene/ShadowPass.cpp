@@ -27,6 +27,9 @@ void ShadowPass::render(const FrameContext& frame) {
     float len = std::sqrt(flat.x * flat.x + flat.z * flat.z);
     glm::vec3 centre = frame.camera.eye + (len > 1e-3f ? flat / len : glm::vec3(0.0f)) * ahead_m_;
     centre.y = frame.world.level().land_height_m;
+    // In steps, so that the map of what stays put is drawn again only when a step is taken.
+    centre.x = std::round(centre.x / kCentreStep_m) * kCentreStep_m;
+    centre.z = std::round(centre.z / kCentreStep_m) * kCentreStep_m;
 
     glm::vec3 sun = lighting.sky.sun_dir;
     glm::vec3 up = std::fabs(sun.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
@@ -44,21 +47,36 @@ void ShadowPass::render(const FrameContext& frame) {
         fbo_.attach_depth(lighting.shadow_map);
         fbo_.set_draw_buffers({});
         fbo_.check_complete();
+        still_map_ = gl::Texture::create_2d("sun.shadow_map.still", GL_DEPTH_COMPONENT32F, size, size);
+        still_fbo_ = gl::Framebuffer::create("shadow.still");
+        still_fbo_.attach_depth(still_map_);
+        still_fbo_.set_draw_buffers({});
+        still_fbo_.check_complete();
+        still_view_proj_.reset();
         fbo_initialised_ = true;
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, size, size);
     glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.5f, 2.0f);
     glDisable(GL_CULL_FACE);  // thin walls and open meshes must cast shadows too
     program_.set("u_view_proj", lighting.shadow_view_proj);
-    frame.scene.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::ShadowCasters,
-                              Frustum(lighting.shadow_view_proj));
+    const Frustum sun_view(lighting.shadow_view_proj);
+    // What stays put (props, relief) is drawn once per view of the sun; each frame starts
+    // from a copy of it and adds what moves.
+    if (still_view_proj_ != lighting.shadow_view_proj) {
+        glBindFramebuffer(GL_FRAMEBUFFER, still_fbo_.id());
+        glClear(GL_DEPTH_BUFFER_BIT);
+        frame.scene.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::StillShadowCasters, sun_view);
+        still_view_proj_ = lighting.shadow_view_proj;
+    }
+    glCopyImageSubData(still_map_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, lighting.shadow_map.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       size, size, 1);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    frame.scene.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::MovingShadowCasters, sun_view);
     glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
