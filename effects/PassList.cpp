@@ -11,6 +11,7 @@
 #include "effects/scene/ShadowPass.h"
 #include "effects/scene/SkyOcclusionPass.h"
 #include "effects/scene/TonemapPass.h"
+#include "effects/scene/UpscalePass.h"
 #include "effects/water/WaterPass.h"
 
 namespace effects {
@@ -29,6 +30,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     passes.push_back(std::make_unique<EnergyPass>());  // additive, stops at the water's depth too
     passes.push_back(std::make_unique<RainPass>());  // refracts everything before it
     passes.push_back(std::make_unique<TonemapPass>());
+    passes.push_back(std::make_unique<UpscalePass>());  // to the output's size; the HUD goes on after
     return passes;
 }
 

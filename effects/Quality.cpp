@@ -10,14 +10,19 @@ QualitySettings quality_settings(Quality quality) {
             s.render_scale = 0.75f;
             s.shadow_map_size = 1024;
             s.shadow_taps = 4;
+            s.env_reflection = false;
             s.fluid_smoothing_max = 2;
+            s.fluid_kernel_max = 5;
             s.dust_max_shells = 8;
             break;
         case Quality::Low:
             s.render_scale = 0.5f;
             s.shadow_map_size = 512;
             s.shadow_taps = 1;
+            s.env_reflection = false;
+            s.ground_detail = false;
             s.fluid_smoothing_max = 1;
+            s.fluid_kernel_max = 3;
             s.bloom = false;
             s.dust_max_shells = 4;
             break;
@@ -38,6 +43,11 @@ std::optional<Quality> parse_quality(std::string_view name) {
     for (Quality q : {Quality::Low, Quality::Medium, Quality::High})
         if (name == quality_name(q)) return q;
     return std::nullopt;
+}
+
+std::vector<std::string> lighting_defines(const QualitySettings& quality) {
+    return {"SHADOW_TAPS " + std::to_string(quality.shadow_taps),
+            std::string("ENV_REFLECTION ") + (quality.env_reflection ? "1" : "0")};
 }
 
 }  // namespace effects

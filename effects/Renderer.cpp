@@ -34,7 +34,9 @@ void Renderer::set_render_scale(float scale) {
     render_scale_ = std::clamp(std::isfinite(scale) ? scale : 1.0f, kMinRenderScale, 1.0f);
 }
 
-void Renderer::render(const sim::World& world, RenderOutput output) {
+void Renderer::render(const sim::World& world, RenderOutput output) { render(world, output, capture_poses(world)); }
+
+void Renderer::render(const sim::World& world, RenderOutput output, const FramePoses& poses) {
     const int width = std::max(1, int(std::lround(float(output.width) * render_scale_)));
     const int height = std::max(1, int(std::lround(float(output.height) * render_scale_)));
     if (width != resources_.targets.width() || height != resources_.targets.height()) {
@@ -48,8 +50,8 @@ void Renderer::render(const sim::World& world, RenderOutput output) {
     sky.sun_radiance = glm::vec3(3.2f, 3.0f, 2.7f) * (1.0f - 0.75f * rain);
     sky.sky_intensity = 1.0f - 0.45f * rain;
 
-    Camera camera = make_camera(world.get<sim::CameraRig>().view(), float(output.width) / float(output.height));
-    FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds};
+    Camera camera = make_camera(poses.camera, float(output.width) / float(output.height));
+    FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds, poses};
     timer_->frame_begin();
     for (auto& pass : passes_) {
         gl::DebugGroup group(pass->name());

@@ -20,6 +20,8 @@ public:
     Renderer(const SceneDesc& scene, const sim::World& world, RendererOptions options = {});
 
     void render(const sim::World& world, RenderOutput output);
+    // The same with the moving things where `poses` puts them (between two ticks).
+    void render(const sim::World& world, RenderOutput output, const FramePoses& poses);
 
     // The preset's settings; its render scale becomes the current one.
     void set_quality(Quality quality);

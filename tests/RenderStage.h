@@ -25,6 +25,7 @@
 #include "effects/scene/ShadowPass.h"
 #include "effects/scene/SkyOcclusionPass.h"
 #include "effects/scene/TonemapPass.h"
+#include "effects/scene/UpscalePass.h"
 #include "effects/water/WaterPass.h"
 #include "game/capture/FrameCapture.h"
 #include "game/capture/Readback.h"
@@ -44,11 +45,12 @@ enum StagePass : unsigned {
     kEnergyPass = 1u << 9,
     kRainPass = 1u << 10,
     kTonemapPass = 1u << 11,
+    kUpscalePass = 1u << 12,
 };
 using StagePasses = unsigned;
 // The lit opaque scene: sky, shadows and sky occlusion for the terrain and props.
 constexpr StagePasses kLitScene = kEnvironmentPass | kShadowPass | kSkyOcclusionPass | kOpaquePass;
-constexpr StagePasses kEveryPass = (kTonemapPass << 1) - 1;
+constexpr StagePasses kEveryPass = (kUpscalePass << 1) - 1;
 
 // Which bit a pass of effects::make_pass_list() is: a pass the stage does not know
 // yet is an error, not a pass silently left out.
@@ -65,6 +67,7 @@ inline StagePass stage_pass_of(const effects::Pass& p) {
     if (dynamic_cast<const effects::EnergyPass*>(&p)) return kEnergyPass;
     if (dynamic_cast<const effects::RainPass*>(&p)) return kRainPass;
     if (dynamic_cast<const effects::TonemapPass*>(&p)) return kTonemapPass;
+    if (dynamic_cast<const effects::UpscalePass*>(&p)) return kUpscalePass;
     throw std::logic_error("RenderStage has no bit for the pass \"" + std::string(p.name()) + "\"");
 }
 
@@ -124,7 +127,7 @@ public:
         return effects::make_camera(view, float(width_) / float(height_));
     }
     effects::FrameContext context(const effects::Camera& camera, double time_s = 0.0) {
-        return {world(), camera, scene_, output_.output(), time_s};
+        return {world(), camera, scene_, output_.output(), time_s, effects::capture_poses(world())};
     }
 
     // Runs the held passes, less the frame's skipped ones, in the game's order.

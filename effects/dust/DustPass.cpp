@@ -118,7 +118,7 @@ void DustPass::render(const FrameContext& frame) {
         const DustLook look = dust_look(prop.kind);
         const FibreTexture& fibres = fibres_for(prop.kind, frame.scene.desc.fibre_directions);
         fibres.bind(kFibreUnit, kLuminanceUnit);
-        const int shells = shells_at(distance[i]);
+        const int shells = std::min(shells_at(distance[i]), frame.scene.quality.dust_max_shells);
         for (const gl::Program* p : {&shell_, &fin_}) {
             p->set("u_height_m", look.height_m);
             p->set("u_tile_m", look.tile_m);

@@ -75,7 +75,7 @@ void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegm
     glBlendFunc(GL_ONE, GL_ONE);
     draw_field(frame.camera, t.depth(), t.width(), t.height(), segments, false);
     glDisable(GL_BLEND);
-    if (look_.bloom > 0.0f) bloom(frame, segments);
+    if (look_.bloom > 0.0f && frame.scene.quality.bloom) bloom(frame, segments);
 }
 
 void EnergyPass::bloom(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {

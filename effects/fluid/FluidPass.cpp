@@ -193,15 +193,18 @@ const gl::Texture* FluidPass::smooth(const gl::Texture& source, gl::Texture* pin
     p->set("u_proj", frame.camera.proj);
     p->set("u_viewport", glm::vec2(float(width_), float(height_)));
     p->set("u_depth", int(kMapUnit));
-    p->set("u_half", (smoothing_.kernel_size - 1) / 2);
+    // A preset may narrow the kernel: close to the tank its cost is per pixel of the screen.
+    const int kernel = std::min(smoothing_.kernel_size, frame.scene.quality.fluid_kernel_max | 1);
+    p->set("u_half", (kernel - 1) / 2);
     p->set("u_sigma", look_.plane_sigma_radii * radius);
     p->set("u_max_move", look_.plane_max_move_radii * radius);
     // The seed's bilateral parameters: sigma_1 = w / (2 sqrt 2), sigma_2 = 2 sqrt 2 r.
-    p->set("u_sigma_space", float(smoothing_.kernel_size) / (2.0f * std::sqrt(2.0f)));
+    p->set("u_sigma_space", float(kernel) / (2.0f * std::sqrt(2.0f)));
     p->set("u_sigma_depth", 2.0f * std::sqrt(2.0f) * radius);
     p->set("u_band", look_.narrow_band_radii * radius);
     const gl::Texture* in = &source;
-    for (int it = 0; it < smoothing_.iterations; ++it) {
+    const int iterations = std::min(smoothing_.iterations, frame.scene.quality.fluid_smoothing_max);
+    for (int it = 0; it < iterations; ++it) {
         gl::Texture* out = &ping_pong[it % 2];
         smooth_fbo_.attach_colour(0, *out);
         smooth_fbo_.bind();

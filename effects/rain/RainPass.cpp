@@ -22,6 +22,7 @@ void RainPass::register_params(ParamRegistry& params) {
 
 void RainPass::render(const FrameContext& frame) {
     gather_rain_view(frame.world, view_);
+    view_.car_to_world = frame.poses.car.matrix();  // the glass moves with the car as drawn
     draw(frame, view_);
 }
 

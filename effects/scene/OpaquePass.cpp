@@ -10,16 +10,18 @@ namespace effects {
 OpaquePass::OpaquePass()
     : sky_(gl::Program::from_files("opaque.sky", {"common/fullscreen.vert.glsl", "scene/sky.frag.glsl"})) {}
 
-void OpaquePass::build_mesh_programs(int shadow_taps) {
+void OpaquePass::build_mesh_programs(const QualitySettings& quality) {
     const std::vector<std::string_view> files = {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"};
-    const std::string taps = "SHADOW_TAPS " + std::to_string(shadow_taps);
-    objects_ = gl::Program::from_files("opaque.objects", files, {taps});
-    ground_ = gl::Program::from_files("opaque.ground", files, {taps, "GROUND"});
-    shadow_taps_ = shadow_taps;
+    std::vector<std::string> defines = lighting_defines(quality);
+    defines.push_back(std::string("GROUND_DETAIL ") + (quality.ground_detail ? "1" : "0"));
+    objects_ = gl::Program::from_files("opaque.objects", files, defines);
+    defines.push_back("GROUND");
+    ground_ = gl::Program::from_files("opaque.ground", files, defines);
+    built_for_ = quality;
 }
 
 void OpaquePass::render(const FrameContext& frame) {
-    if (shadow_taps_ != frame.scene.quality.shadow_taps) build_mesh_programs(frame.scene.quality.shadow_taps);
+    if (built_for_ != frame.scene.quality) build_mesh_programs(frame.scene.quality);
     SceneTargets& t = frame.scene.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
     glViewport(0, 0, t.width(), t.height());
@@ -40,7 +42,7 @@ void OpaquePass::render(const FrameContext& frame) {
         p->set("u_eye", frame.camera.eye);
     }
     frame.scene.geometry.apply_ground(ground_);
-    frame.scene.geometry.draw(objects_, ground_, frame.world, SceneGeometry::Use::Shading,
+    frame.scene.geometry.draw(objects_, ground_, frame.poses, SceneGeometry::Use::Shading,
                               Frustum(frame.camera.view_proj));
     glDisable(GL_CULL_FACE);
 

@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include "effects/gl/Program.h"
 #include "effects/scene/Pass.h"
 
@@ -13,11 +15,12 @@ public:
     void render(const FrameContext& frame) override;
 
 private:
-    // The mesh programs for a shadow filter (SHADOW_TAPS), rebuilt when the preset's changes.
-    void build_mesh_programs(int shadow_taps);
+    // The mesh programs for a preset's lighting (shaders' SHADOW_TAPS, ENV_REFLECTION,
+    // GROUND_DETAIL), rebuilt when the preset changes.
+    void build_mesh_programs(const QualitySettings& quality);
 
     gl::Program objects_, ground_, sky_;
-    int shadow_taps_ = 0;
+    std::optional<QualitySettings> built_for_;
 };
 
 }  // namespace effects

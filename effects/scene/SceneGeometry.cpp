@@ -8,9 +8,6 @@
 #include <glm/matrix.hpp>
 
 #include "effects/scene/TerrainMesh.h"
-#include "sim/objects/ThrownObjects.h"
-#include "sim/vehicle/Boat.h"
-#include "sim/vehicle/Car.h"
 
 namespace effects {
 
@@ -65,7 +62,7 @@ void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
     }
 }
 
-void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const sim::World& world, Use use,
+void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const FramePoses& poses, Use use,
                          const Frustum& view) const {
     const bool depth_only = use == Use::ShadowCasters;
     auto material = [&](glm::vec4 tint) {
@@ -76,26 +73,25 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     if (desc_.car_model >= 0) {
         // Wheels and hubcaps (meshes "wheel_fl", "hubcap_rr", ...) turn
         // about their axle (model z) and the front ones steer about their vertical.
-        const sim::Car& car = world.get<sim::Car>();
-        const glm::mat4 body = car.pose().matrix();
+        const glm::mat4 body = poses.car.matrix();
         models_[size_t(desc_.car_model)]->draw_parts(p, depth_only, [&](const std::string& mesh, glm::vec3 centre) {
             const bool wheel = mesh.starts_with("wheel_") || mesh.starts_with("hubcap_");
             if (!wheel) return place(p, body, depth_only);
             const bool front = mesh.size() >= 2 && mesh[mesh.size() - 2] == 'f';
             glm::mat4 m = glm::translate(body, centre);
-            if (front) m = glm::rotate(m, car.steer_rad(), glm::vec3(0.0f, 1.0f, 0.0f));
-            m = glm::rotate(m, -car.wheel_spin_rad(), glm::vec3(0.0f, 0.0f, 1.0f));  // rolling forward
+            if (front) m = glm::rotate(m, poses.car_steer_rad, glm::vec3(0.0f, 1.0f, 0.0f));
+            m = glm::rotate(m, -poses.car_wheel_spin_rad, glm::vec3(0.0f, 0.0f, 1.0f));  // rolling forward
             place(p, glm::translate(m, -centre), depth_only);
         });
     }
     if (desc_.boat_model >= 0) {
-        place(p, world.get<sim::Boat>().pose().matrix(), depth_only);
+        place(p, poses.boat.matrix(), depth_only);
         models_[size_t(desc_.boat_model)]->draw(p, depth_only);
     }
-    for (const sim::ThrownObject& o : world.get<sim::ThrownObjects>().objects()) {
+    for (const FramePoses::Object& o : poses.objects) {
         if (view.outside(o.position - o.radius_m, o.position + o.radius_m)) continue;
         // Stones grey, floats bright orange so they read on the water.
-        material(o.sinks() ? glm::vec4(0.18f, 0.18f, 0.17f, 1.0f) : glm::vec4(0.9f, 0.28f, 0.04f, 1.0f));
+        material(o.sinks ? glm::vec4(0.18f, 0.18f, 0.17f, 1.0f) : glm::vec4(0.9f, 0.28f, 0.04f, 1.0f));
         glm::mat4 m = glm::translate(glm::mat4(1.0f), o.position) * glm::scale(glm::mat4(1.0f), glm::vec3(o.radius_m));
         place(p, m, depth_only);
         sphere_.draw(p, depth_only);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "effects/gl/Program.h"
+#include "effects/scene/FramePoses.h"
 #include "effects/scene/Frustum.h"
 #include "effects/scene/GpuModel.h"
 #include "effects/scene/SceneDesc.h"
@@ -22,7 +23,7 @@ public:
     enum class Use { Shading, ShadowCasters };
     // What `view` can see, nearest kinds first (the vehicles, thrown objects, props,
     // then the ground) so that the early depth test spares hidden pixels their shading.
-    void draw(const gl::Program& objects, const gl::Program& ground, const sim::World& world, Use use,
+    void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
               const Frustum& view) const;
     // The level's props alone: what stays put, for the top-down sky occlusion.
     void draw_props(const gl::Program& program, bool depth_only) const;

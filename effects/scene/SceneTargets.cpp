@@ -27,6 +27,20 @@ void SceneTargets::resize(int width, int height) {
     copy_fbo_.attach_depth(depth_copy_);
     copy_fbo_.set_draw_buffers({0});
     copy_fbo_.check_complete();
+    display_ = gl::Texture{};
+    display_fbo_ = gl::Framebuffer{};
+}
+
+const gl::Framebuffer& SceneTargets::display_fbo() {
+    if (display_.id() == 0) {
+        display_ = gl::Texture::create_2d("scene.display", GL_RGBA8, width_, height_);
+        display_.set_filter(GL_NEAREST, GL_NEAREST);
+        display_.set_wrap(GL_CLAMP_TO_EDGE);
+        display_fbo_ = gl::Framebuffer::create("scene.display");
+        display_fbo_.attach_colour(0, display_);
+        display_fbo_.check_complete();
+    }
+    return display_fbo_;
 }
 
 void SceneTargets::copy_scene() {

@@ -1,7 +1,7 @@
 #pragma once
 // The frame's shared render targets: HDR colour, world normals and depth that the
 // opaque passes write, and copies of colour and depth for the passes that refract
-// what lies behind them (sea, fluid tank, windshield).
+// what lies behind them (sea, fluid tank, windshield), and the tone-mapped display image.
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Texture.h"
 
@@ -21,11 +21,15 @@ public:
     const gl::Texture& depth() const { return depth_; }
     const gl::Texture& colour_copy() const { return colour_copy_; }
     const gl::Texture& depth_copy() const { return depth_copy_; }
+    // The tone-mapped frame at the scene's size, when the output is larger (render scale
+    // below 1): the upscale reads it. Made on first use.
+    const gl::Framebuffer& display_fbo();
+    const gl::Texture& display() const { return display_; }
 
 private:
     int width_ = 0, height_ = 0;
-    gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_;
-    gl::Framebuffer scene_fbo_, copy_fbo_;
+    gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_, display_;
+    gl::Framebuffer scene_fbo_, copy_fbo_, display_fbo_;
 };
 
 }  // namespace effects

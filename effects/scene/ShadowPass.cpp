@@ -57,7 +57,7 @@ void ShadowPass::render(const FrameContext& frame) {
     glPolygonOffset(1.5f, 2.0f);
     glDisable(GL_CULL_FACE);  // thin walls and open meshes must cast shadows too
     program_.set("u_view_proj", lighting.shadow_view_proj);
-    frame.scene.geometry.draw(program_, program_, frame.world, SceneGeometry::Use::ShadowCasters,
+    frame.scene.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::ShadowCasters,
                               Frustum(lighting.shadow_view_proj));
     glDisable(GL_POLYGON_OFFSET_FILL);
 }

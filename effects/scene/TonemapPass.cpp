@@ -10,14 +10,22 @@ TonemapPass::TonemapPass()
 void TonemapPass::register_params(ParamRegistry& params) { params.add("tonemap", "exposure", &exposure_, 0.1f, 4.0f); }
 
 void TonemapPass::render(const FrameContext& frame) {
-    glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
-    glViewport(0, 0, frame.output.width, frame.output.height);
+    // Into the output at its own size; for a smaller scene, into the display image that
+    // the upscale pass brings to the output.
+    SceneTargets& t = frame.scene.targets;
+    if (t.width() == frame.output.width && t.height() == frame.output.height) {
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
+        glViewport(0, 0, frame.output.width, frame.output.height);
+    } else {
+        t.display_fbo().bind();
+        glViewport(0, 0, t.width(), t.height());
+    }
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     program_.use();
     program_.set("u_exposure", exposure_);
     program_.set("u_hdr", 0);
-    frame.scene.targets.colour().bind(0);
+    t.colour().bind(0);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -59,6 +59,7 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     }
 
     // Shading, once per water pixel.
+    shading_.set_quality(frame.scene.quality);
     for (const gl::Program* p : {&shading_.sea_program(), &shading_.sheet_program()}) {
         frame.scene.lighting.apply(*p);
         p->set("u_inv_view_proj", cam.inv_view_proj);

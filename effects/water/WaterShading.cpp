@@ -12,9 +12,18 @@ constexpr float kSheetPassDepth = 0.4f, kSeaPassDepth = 0.8f;  // the sea pass a
 }  // namespace
 
 WaterShading::WaterShading()
-    : sea_(gl::Program::from_files("water.shade_sea", {"water/screen.vert.glsl", "water/shade_sea.frag.glsl"})),
-      sheet_(gl::Program::from_files("water.shade_sheet", {"water/screen.vert.glsl", "water/shade_sheet.frag.glsl"})),
-      mask_(gl::Program::from_files("water.mask", {"water/screen.vert.glsl", "water/mask.frag.glsl"})) {}
+    : mask_(gl::Program::from_files("water.mask", {"water/screen.vert.glsl", "water/mask.frag.glsl"})) {
+    set_quality(quality_settings(Quality::High));
+}
+
+void WaterShading::set_quality(const QualitySettings& quality) {
+    std::vector<std::string> lighting = lighting_defines(quality);
+    if (lighting == lighting_) return;
+    sea_ = gl::Program::from_files("water.shade_sea", {"water/screen.vert.glsl", "water/shade_sea.frag.glsl"}, lighting);
+    sheet_ = gl::Program::from_files("water.shade_sheet", {"water/screen.vert.glsl", "water/shade_sheet.frag.glsl"},
+                                     lighting);
+    lighting_ = std::move(lighting);
+}
 
 void WaterShading::begin_geometry(const SceneTargets& t) {
     if (t.colour().id() != colour_id_ || t.normal().id() != normal_id_ || t.depth().id() != depth_id_ ||

@@ -125,7 +125,7 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
         view.fov_y_deg = 50.0f;
     }
     effects::Camera camera = effects::make_camera(view, float(width) / float(height));
-    effects::FrameContext frame{*s.world, camera, scene, capture.output(), 0.0};
+    effects::FrameContext frame{*s.world, camera, scene, capture.output(), 0.0, effects::capture_poses(*s.world)};
     effects::EnvironmentPass environment;
     effects::ShadowPass shadow;
     effects::SkyOcclusionPass sky;

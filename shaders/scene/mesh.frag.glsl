@@ -35,7 +35,12 @@ float value_noise(vec2 p) {
 }
 
 vec3 ground_colour(vec3 p, out float roughness) {
+    // GROUND_DETAIL 0 (a cheaper preset's): the coarse octave alone.
+#if defined(GROUND_DETAIL) && GROUND_DETAIL == 0
+    float n = value_noise(p.xz * 0.35) * 0.6 + 0.2;
+#else
     float n = value_noise(p.xz * 0.35) * 0.6 + value_noise(p.xz * 2.1) * 0.4;
+#endif
     vec3 grass = mix(vec3(0.10, 0.17, 0.05), vec3(0.16, 0.22, 0.07), n);
     vec3 c = grass;
     roughness = 0.95;

@@ -1,0 +1,31 @@
+#include "effects/scene/UpscalePass.h"
+
+#include "effects/gl/EmptyVertexArray.h"
+
+namespace effects {
+
+UpscalePass::UpscalePass()
+    : program_(gl::Program::from_files("upscale", {"common/fullscreen.vert.glsl", "scene/upscale.frag.glsl"})) {}
+
+void UpscalePass::register_params(ParamRegistry& params) {
+    params.add("upscale", "edge steepening", &edge_, 0.0f, 1.0f);
+    params.add("upscale", "sharpness", &sharpness_, 0.0f, 1.0f);
+}
+
+void UpscalePass::render(const FrameContext& frame) {
+    const SceneTargets& t = frame.scene.targets;
+    if (t.width() == frame.output.width && t.height() == frame.output.height) return;
+    glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
+    glViewport(0, 0, frame.output.width, frame.output.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    program_.use();
+    program_.set("u_display", 0);
+    program_.set("u_edge", edge_);
+    program_.set("u_sharpness", sharpness_);
+    t.display().bind(0);
+    gl::bind_empty_vertex_array();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace effects
