@@ -13,6 +13,7 @@ QualitySettings quality_settings(Quality quality) {
             s.env_reflection = false;
             s.fluid_smoothing_max = 2;
             s.fluid_kernel_max = 5;
+            s.rain_map_width = 512;
             s.dust_max_shells = 8;
             break;
         case Quality::Low:
@@ -23,6 +24,7 @@ QualitySettings quality_settings(Quality quality) {
             s.ground_detail = false;
             s.fluid_smoothing_max = 1;
             s.fluid_kernel_max = 3;
+            s.rain_map_width = 256;
             s.bloom = false;
             s.dust_max_shells = 4;
             break;

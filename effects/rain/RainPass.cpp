@@ -9,6 +9,8 @@ namespace effects {
 
 RainPass::RainPass(int height_map_width, int height_map_height)
     : height_map_(height_map_width, height_map_height),
+      made_width_(height_map_width),
+      made_height_(height_map_height),
       shade_(gl::Program::from_files("rain.windshield", {"rain/windshield.vert.glsl", "rain/windshield.frag.glsl"})) {}
 
 void RainPass::register_params(ParamRegistry& params) {
@@ -32,6 +34,9 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     drew_ = true;
     const sim::GlassSurface& glass = *view.glass;
     if (!mesh_ || mesh_->glass() != &glass) mesh_ = std::make_unique<WindshieldMesh>(glass);
+    // The preset's map size, at most the size the pass was made with (a test's own).
+    const int map_width = std::min(frame.scene.quality.rain_map_width, made_width_);
+    if (height_map_.width() != map_width) height_map_ = DropHeightMap(map_width, map_width * made_height_ / made_width_);
     const glm::vec2 glass_size(glass.width_m(), glass.height_m());
     HeightCompression compression;
     compression.steps = look_.compression_steps;

@@ -41,6 +41,7 @@ public:
 
 private:
     DropHeightMap height_map_;
+    int made_width_, made_height_;  // the size asked for at construction: the high preset's
     gl::Program shade_;
     std::unique_ptr<WindshieldMesh> mesh_;
     gl::Texture behind_;  // the finished scene with mips, for the out-of-focus refraction
