@@ -49,8 +49,9 @@ TEST(ResolutionController, SlowFramesBringTheScaleDownWithinAFewFrames) {
     EXPECT_LE(scales.back(), 0.55f);
     // Still slow at the new scale: down again, to the floor and no further.
     scales = feed(c, repeat(60.0, 100));
-    EXPECT_FLOAT_EQ(scales.back(), 0.4f);
-    for (float s : scales) EXPECT_GE(s, 0.4f);
+    const float floor = game::ResolutionController::Options{}.min_scale;
+    EXPECT_FLOAT_EQ(scales.back(), floor);
+    for (float s : scales) EXPECT_GE(s, floor);
 }
 
 TEST(ResolutionController, FastFramesBringItUpSlowlyToTheTop) {
@@ -85,7 +86,7 @@ TEST(ResolutionController, AlternatingTimesDoNotMakeItOscillate) {
     for (int i = 0; i < 1000; ++i) ms.push_back(i % 2 ? 10.0 : 70.0);
     std::vector<float> scales = feed(d, ms);
     for (size_t i = 1; i < scales.size(); ++i) EXPECT_LE(scales[i], scales[i - 1]) << "frame " << i;
-    EXPECT_FLOAT_EQ(scales.back(), 0.4f);
+    EXPECT_FLOAT_EQ(scales.back(), game::ResolutionController::Options{}.min_scale);
 }
 
 TEST(ResolutionController, SettlesWhereTheModelledFramesMeetTheBudget) {
@@ -97,7 +98,7 @@ TEST(ResolutionController, SettlesWhereTheModelledFramesMeetTheBudget) {
         scale = c.frame(modelled_ms(scale, 8.0, 60.0));
         history.push_back(scale);
     }
-    EXPECT_GE(scale, 0.4f);
+    EXPECT_GE(scale, game::ResolutionController::Options{}.min_scale);
     EXPECT_LE(modelled_ms(scale, 8.0, 60.0), 30.0);
     // Settled: it does not step back and forth every frame, nor keep changing.
     int late_changes = 0;

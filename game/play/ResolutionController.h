@@ -16,7 +16,7 @@ public:
     struct Options {
         double budget_ms = 30.0;       // a 30 fps target with a little to spare
         double up_fraction = 0.7;      // "well under": frames below this part of the budget
-        float min_scale = 0.4f;
+        float min_scale = 0.35f;
         float max_scale = 1.0f;
         float start_scale = 0.75f;     // medium's
         float step = 0.05f;            // scales are multiples of this
