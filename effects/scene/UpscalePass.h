@@ -17,7 +17,7 @@ public:
 
 private:
     gl::Program program_;
-    float edge_ = 1.0f;
+    float edge_ = 0.5f;  // fully steepened, a low scale's aliased edges read as stairs
     float sharpness_ = 0.5f;
 };
 
