@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "game/capture/ImageFiles.h"
+#include "game/play/ResolutionController.h"
 
 namespace fs = std::filesystem;
 
@@ -318,7 +319,7 @@ TEST_F(Cli, TimedemoHeadlessReportsItsNumbersAsJson) {
     for (const auto& p : j["passes"]) EXPECT_GE(p["ms"].get<double>(), 0.0) << p["name"];
     double seconds = 0.0;
     for (const auto& s : j["seconds_at_scale"]) {
-        EXPECT_GE(s["scale"].get<double>(), 0.4 - 1e-6);
+        EXPECT_GE(s["scale"].get<double>(), game::ResolutionController::Options{}.min_scale - 1e-6);
         EXPECT_LE(s["scale"].get<double>(), 1.0 + 1e-6);
         seconds += s["seconds"].get<double>();
     }
