@@ -82,8 +82,10 @@ void PlayLoop::run(const LoopHooks& hooks) {
         const Screen::Size size = screen_.size();
         const bool minimised = size.width <= 0 || size.height <= 0;
         // Paused, minimised, unfocused, or a replay at its end: nothing changes on screen.
-        const bool was_idle =
-            paused_ || minimised || input_ended || (options_.pause_when_unfocused && !screen_.focused());
+        const auto is_idle = [&] {
+            return paused_ || minimised || input_ended || (options_.pause_when_unfocused && !screen_.focused());
+        };
+        const bool was_idle = is_idle();
         // Idle with its frame shown (or nothing to show): sleep until something happens.
         screen_.handle_events(was_idle && (idle_frame_shown || minimised) ? kIdleWaitSeconds : 0.0);
         for (int key : screen_.take_key_presses()) on_key_press(key, keyboard_drives);
@@ -94,8 +96,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
         } else {
             input_.set_down(input_from_keys([this](int key) { return screen_.key_down(key); }));
         }
-        const bool idle =
-            paused_ || minimised || input_ended || (options_.pause_when_unfocused && !screen_.focused());
+        const bool idle = is_idle();  // the events may have paused or unfocused it
 
         const auto now = Clock::now();
         const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(now - last);
