@@ -9,7 +9,6 @@ QualitySettings quality_settings(Quality quality) {
         case Quality::Medium:
             s.render_scale = 0.75f;
             s.shadow_map_size = 1024;
-            s.shadow_taps = 4;
             s.env_reflection = false;
             s.fluid_smoothing_max = 2;
             s.fluid_kernel_max = 5;
@@ -19,7 +18,7 @@ QualitySettings quality_settings(Quality quality) {
         case Quality::Low:
             s.render_scale = 0.5f;
             s.shadow_map_size = 512;
-            s.shadow_taps = 1;
+            s.soft_shadows = false;
             s.env_reflection = false;
             s.ground_detail = false;
             s.fluid_smoothing_max = 1;
@@ -47,9 +46,11 @@ std::optional<Quality> parse_quality(std::string_view name) {
     return std::nullopt;
 }
 
-std::vector<std::string> lighting_defines(const QualitySettings& quality) {
-    return {"SHADOW_TAPS " + std::to_string(quality.shadow_taps),
-            std::string("ENV_REFLECTION ") + (quality.env_reflection ? "1" : "0")};
+std::vector<std::string> shader_defines(const QualitySettings& quality, bool line_lights) {
+    return {std::string("SOFT_SHADOWS ") + (quality.soft_shadows ? "1" : "0"),
+            std::string("ENV_REFLECTION ") + (quality.env_reflection ? "1" : "0"),
+            std::string("GROUND_DETAIL ") + (quality.ground_detail ? "1" : "0"),
+            std::string("LINE_LIGHTS ") + (line_lights ? "1" : "0")};
 }
 
 }  // namespace effects

@@ -13,7 +13,7 @@ enum class Quality { Low, Medium, High };
 struct QualitySettings {
     float render_scale = 1.0f;     // the 3D scene's size as a fraction of the output's
     int shadow_map_size = 1024;    // texels on a side
-    int shadow_taps = 9;           // sun shadow filter: 1 (one bilinear compare) .. 9 (3x3 of them)
+    bool soft_shadows = true;      // the sun's shadow filtered over 4x4 texels (else 2x2)
     bool env_reflection = true;    // opaque surfaces reflect the environment cube (else its ambient)
     bool ground_detail = true;     // the ground's fine noise octave
     int fluid_smoothing_max = 64;  // cap on the tank's depth smoothing iterations
@@ -28,8 +28,9 @@ QualitySettings quality_settings(Quality quality);
 std::string_view quality_name(Quality quality);
 std::optional<Quality> parse_quality(std::string_view name);
 
-// The #defines of shaders/common/lighting.glsl for these settings (SHADOW_TAPS,
-// ENV_REFLECTION), for every program that includes it.
-std::vector<std::string> lighting_defines(const QualitySettings& quality);
+// The shaders' #defines for these settings (common/lighting.glsl's SOFT_SHADOWS and
+// ENV_REFLECTION, scene/mesh.frag.glsl's GROUND_DETAIL) and for whether the frame has
+// line lights (LINE_LIGHTS); effects/scene/LitProgram keeps the variants.
+std::vector<std::string> shader_defines(const QualitySettings& quality, bool line_lights);
 
 }  // namespace effects

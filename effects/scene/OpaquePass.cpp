@@ -1,27 +1,15 @@
 #include "effects/scene/OpaquePass.h"
 
-#include <string>
-#include <vector>
-
 #include "effects/gl/EmptyVertexArray.h"
 
 namespace effects {
 
 OpaquePass::OpaquePass()
-    : sky_(gl::Program::from_files("opaque.sky", {"common/fullscreen.vert.glsl", "scene/sky.frag.glsl"})) {}
-
-void OpaquePass::build_mesh_programs(const QualitySettings& quality) {
-    const std::vector<std::string_view> files = {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"};
-    std::vector<std::string> defines = lighting_defines(quality);
-    defines.push_back(std::string("GROUND_DETAIL ") + (quality.ground_detail ? "1" : "0"));
-    objects_ = gl::Program::from_files("opaque.objects", files, defines);
-    defines.push_back("GROUND");
-    ground_ = gl::Program::from_files("opaque.ground", files, defines);
-    built_for_ = quality;
-}
+    : objects_("opaque.objects", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"}),
+      ground_("opaque.ground", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"}, {"GROUND"}),
+      sky_(gl::Program::from_files("opaque.sky", {"common/fullscreen.vert.glsl", "scene/sky.frag.glsl"})) {}
 
 void OpaquePass::render(const FrameContext& frame) {
-    if (built_for_ != frame.scene.quality) build_mesh_programs(frame.scene.quality);
     SceneTargets& t = frame.scene.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
     glViewport(0, 0, t.width(), t.height());
@@ -36,13 +24,16 @@ void OpaquePass::render(const FrameContext& frame) {
 
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    for (const gl::Program* p : {&objects_, &ground_}) {
+    const bool line_lights = frame.scene.lighting.has_line_lights();
+    const gl::Program& objects = objects_.get(frame.scene.quality, line_lights);
+    const gl::Program& ground = ground_.get(frame.scene.quality, line_lights);
+    for (const gl::Program* p : {&objects, &ground}) {
         frame.scene.lighting.apply(*p);
         p->set("u_view_proj", frame.camera.view_proj);
         p->set("u_eye", frame.camera.eye);
     }
-    frame.scene.geometry.apply_ground(ground_);
-    frame.scene.geometry.draw(objects_, ground_, frame.poses, SceneGeometry::Use::Shading,
+    frame.scene.geometry.apply_ground(ground);
+    frame.scene.geometry.draw(objects, ground, frame.poses, SceneGeometry::Use::Shading,
                               Frustum(frame.camera.view_proj));
     glDisable(GL_CULL_FACE);
 

@@ -1,7 +1,6 @@
 #pragma once
-#include <optional>
-
 #include "effects/gl/Program.h"
+#include "effects/scene/LitProgram.h"
 #include "effects/scene/Pass.h"
 
 namespace effects {
@@ -15,12 +14,8 @@ public:
     void render(const FrameContext& frame) override;
 
 private:
-    // The mesh programs for a preset's lighting (shaders' SHADOW_TAPS, ENV_REFLECTION,
-    // GROUND_DETAIL), rebuilt when the preset changes.
-    void build_mesh_programs(const QualitySettings& quality);
-
-    gl::Program objects_, ground_, sky_;
-    std::optional<QualitySettings> built_for_;
+    LitProgram objects_, ground_;
+    gl::Program sky_;
 };
 
 }  // namespace effects

@@ -44,6 +44,7 @@ void SceneLighting::set_line_lights(std::span<const LineLight> lights) {
     else
         line_lights_.update(0, bytes);
     line_lights_.update(0, std::as_bytes(std::span(&count, 1)));  // the ivec4 count's x, as an int
+    line_light_count_ = count;
 }
 
 void SceneLighting::apply_sky(const gl::Program& p) const {

@@ -55,10 +55,12 @@ public:
     void resize_shadow_map(int size);
     // The line lights of the frame (none unless set; beyond kMaxLineLights ignored).
     void set_line_lights(std::span<const LineLight> lights);
+    bool has_line_lights() const { return line_light_count_ > 0; }
 
 private:
     int env_levels_;
     gl::Buffer line_lights_;
+    int line_light_count_ = 0;
 };
 
 }  // namespace effects

@@ -59,7 +59,7 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     }
 
     // Shading, once per water pixel.
-    shading_.set_quality(frame.scene.quality);
+    shading_.select_programs(frame.scene.quality, frame.scene.lighting.has_line_lights());
     for (const gl::Program* p : {&shading_.sea_program(), &shading_.sheet_program()}) {
         frame.scene.lighting.apply(*p);
         p->set("u_inv_view_proj", cam.inv_view_proj);

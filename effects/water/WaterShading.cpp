@@ -12,17 +12,15 @@ constexpr float kSheetPassDepth = 0.4f, kSeaPassDepth = 0.8f;  // the sea pass a
 }  // namespace
 
 WaterShading::WaterShading()
-    : mask_(gl::Program::from_files("water.mask", {"water/screen.vert.glsl", "water/mask.frag.glsl"})) {
-    set_quality(quality_settings(Quality::High));
+    : sea_("water.shade_sea", {"water/screen.vert.glsl", "water/shade_sea.frag.glsl"}),
+      sheet_("water.shade_sheet", {"water/screen.vert.glsl", "water/shade_sheet.frag.glsl"}),
+      mask_(gl::Program::from_files("water.mask", {"water/screen.vert.glsl", "water/mask.frag.glsl"})) {
+    select_programs(quality_settings(Quality::High), false);
 }
 
-void WaterShading::set_quality(const QualitySettings& quality) {
-    std::vector<std::string> lighting = lighting_defines(quality);
-    if (lighting == lighting_) return;
-    sea_ = gl::Program::from_files("water.shade_sea", {"water/screen.vert.glsl", "water/shade_sea.frag.glsl"}, lighting);
-    sheet_ = gl::Program::from_files("water.shade_sheet", {"water/screen.vert.glsl", "water/shade_sheet.frag.glsl"},
-                                     lighting);
-    lighting_ = std::move(lighting);
+void WaterShading::select_programs(const QualitySettings& quality, bool line_lights) {
+    sea_program_ = &sea_.get(quality, line_lights);
+    sheet_program_ = &sheet_.get(quality, line_lights);
 }
 
 void WaterShading::begin_geometry(const SceneTargets& t) {
@@ -88,8 +86,8 @@ void WaterShading::shade(const SceneTargets& t, bool sheets) {
         p.set("u_kind", int(kKindUnit));
         glDrawArrays(GL_TRIANGLES, 0, 3);
     };
-    pass(sea_, kSeaPassDepth);
-    if (sheets) pass(sheet_, kSheetPassDepth);
+    pass(*sea_program_, kSeaPassDepth);
+    if (sheets) pass(*sheet_program_, kSheetPassDepth);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
 }

@@ -7,14 +7,12 @@
 // pixels it discards: so the dense wave mesh only pays for the cheap shader, and the
 // shading passes are depth-tested against a mask of the water pixels (made from the
 // kind target) so that nothing else is shaded at all.
-#include <string>
-#include <vector>
-
 #include "effects/Quality.h"
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 #include "effects/scene/FrameContext.h"
+#include "effects/scene/LitProgram.h"
 
 namespace effects {
 
@@ -37,16 +35,16 @@ public:
 
     // One program per kind: a software rasteriser would run both kinds' code for
     // every pixel of a shader that branches between them.
-    // The shading programs lit as the preset asks (lighting.glsl's defines); rebuilt when
-    // it changes.
-    void set_quality(const QualitySettings& quality);
-    const gl::Program& sea_program() const { return sea_; }
-    const gl::Program& sheet_program() const { return sheet_; }
+    // The shading programs lit as the preset and the frame's line lights ask.
+    void select_programs(const QualitySettings& quality, bool line_lights);
+    const gl::Program& sea_program() const { return *sea_program_; }
+    const gl::Program& sheet_program() const { return *sheet_program_; }
     const gl::Texture& kind() const { return kind_; }
 
 private:
-    gl::Program sea_, sheet_, mask_;
-    std::vector<std::string> lighting_;
+    LitProgram sea_, sheet_;
+    const gl::Program *sea_program_ = nullptr, *sheet_program_ = nullptr;
+    gl::Program mask_;
     gl::Texture kind_, mask_depth_;
     gl::Framebuffer geometry_fbo_, shade_fbo_;
     GLuint colour_id_ = 0, normal_id_ = 0, depth_id_ = 0;  // the scene textures the framebuffers hold

@@ -21,6 +21,7 @@ layout(std140, binding = 3) uniform LineLights {
 // Lambertian emission, fading to zero at its reach.
 vec3 line_light_irradiance(vec3 p, vec3 n) {
     vec3 sum = vec3(0.0);
+#if !defined(LINE_LIGHTS) || LINE_LIGHTS == 1  // 0: a frame without any (LitProgram)
     for (int i = 0; i < min(u_line_light_count.x, kMaxLineLights); ++i) {
         vec3 a = u_line_light_start[i].xyz, b = u_line_light_end[i].xyz;
         float reach = u_line_light_start[i].w;
@@ -38,6 +39,7 @@ vec3 line_light_irradiance(vec3 p, vec3 n) {
         }
         sum += u_line_light_colour[i].rgb * (u_line_light_end[i].w * sqrt(len2) / float(kSamples) * e);
     }
+#endif
     return sum;
 }
 
@@ -45,22 +47,25 @@ float sun_visibility(vec3 world_pos, vec3 n) {
     vec4 s = u_shadow_matrix * vec4(world_pos + n * 0.08, 1.0);
     vec3 p = s.xyz / s.w;
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
-    // Each tap is a 2x2 bilinear comparison. SHADOW_TAPS (a quality preset's): 9 taps
-    // over 3x3 texels, 4 at half-texel offsets (a tent over the same 3x3), or 1.
-#if defined(SHADOW_TAPS) && SHADOW_TAPS == 1
-    return texture(u_shadow_map, vec3(p.xy, p.z - 0.0015));
-#elif defined(SHADOW_TAPS) && SHADOW_TAPS == 4
-    vec2 texel = 0.5 / vec2(textureSize(u_shadow_map, 0));
-    float sum = texture(u_shadow_map, vec3(p.xy + vec2(-texel.x, -texel.y), p.z - 0.0015)) +
-                texture(u_shadow_map, vec3(p.xy + vec2(texel.x, -texel.y), p.z - 0.0015)) +
-                texture(u_shadow_map, vec3(p.xy + vec2(-texel.x, texel.y), p.z - 0.0015)) +
-                texture(u_shadow_map, vec3(p.xy + vec2(texel.x, texel.y), p.z - 0.0015));
-    return sum * 0.25;
+    float depth = p.z - 0.0015;
+#if defined(SOFT_SHADOWS) && SOFT_SHADOWS == 0
+    // A cheaper preset's: one bilinear comparison.
+    return texture(u_shadow_map, vec3(p.xy, depth));
 #else
-    vec2 texel = 1.0 / vec2(textureSize(u_shadow_map, 0));
-    float sum = 0.0;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x) sum += texture(u_shadow_map, vec3(p.xy + vec2(x, y) * texel, p.z - 0.0015));
+    // A 3x3 box of bilinear comparisons, a tent over 4x4 texels, in four taps (Castano,
+    // "Shadow Mapping Summary", 2013). Along x the box weighs the texels from floor(u)-1
+    // to floor(u)+2 by (1-f, 1, 1, f) / 3 (f the fraction past a texel centre); tap a
+    // takes the first two in the ratio 1-f : 1, tap b the last two as 1 : f, each tap
+    // placed so that its own bilinear weights are that ratio.
+    vec2 size = vec2(textureSize(u_shadow_map, 0));
+    vec2 u = p.xy * size - 0.5;
+    vec2 base = floor(u), f = u - base;
+    vec2 wa = 2.0 - f, wb = 1.0 + f;                           // each tap's weight, of 3
+    vec2 ua = (base - 0.5 + 1.0 / wa) / size, ub = (base + 1.5 + f / wb) / size;
+    float sum = wa.x * wa.y * texture(u_shadow_map, vec3(ua.x, ua.y, depth)) +
+                wb.x * wa.y * texture(u_shadow_map, vec3(ub.x, ua.y, depth)) +
+                wa.x * wb.y * texture(u_shadow_map, vec3(ua.x, ub.y, depth)) +
+                wb.x * wb.y * texture(u_shadow_map, vec3(ub.x, ub.y, depth));
     return sum / 9.0;
 #endif
 }

@@ -1,0 +1,34 @@
+#pragma once
+// A program that includes shaders/common/lighting.glsl, built in the variants its
+// lighting takes: the preset's (shader_defines) and with or without the energy
+// beams' line lights. Those are compiled in or out rather than looped over: a software
+// rasteriser runs a loop's body once even when it has nothing to do, which on most
+// frames (no shot in flight) would cost every lit pixel the whole line-light sum.
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "effects/Quality.h"
+#include "effects/gl/Program.h"
+
+namespace effects {
+
+class LitProgram {
+public:
+    LitProgram(std::string label, std::vector<std::string_view> files, std::vector<std::string> defines = {});
+
+    // The variant for this preset, with the line-light sum if `line_lights`; built on
+    // first use, and all variants dropped when the preset changes.
+    const gl::Program& get(const QualitySettings& quality, bool line_lights);
+
+private:
+    std::string label_;
+    std::vector<std::string_view> files_;
+    std::vector<std::string> defines_;
+    std::optional<QualitySettings> built_for_;
+    std::array<std::optional<gl::Program>, 2> variants_;  // without, with line lights
+};
+
+}  // namespace effects
