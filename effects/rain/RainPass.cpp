@@ -96,7 +96,6 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     shade_.set("u_surface", 0);
     shade_.set("u_behind", 1);
     const int blades = int(std::min<size_t>(view.blades.size(), 2));
-    shade_.set("u_blade_count", blades);
     static constexpr const char* kPivot[2] = {"u_blade_pivot[0]", "u_blade_pivot[1]"};
     static constexpr const char* kDir[2] = {"u_blade_dir[0]", "u_blade_dir[1]"};
     static constexpr const char* kSpan[2] = {"u_blade_span[0]", "u_blade_span[1]"};
@@ -106,6 +105,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
         shade_.set(kDir[b], w.direction);
         shade_.set(kSpan[b], glm::vec2(w.inner_m, w.outer_m));
     }
+    for (int b = blades; b < 2; ++b) shade_.set(kSpan[b], glm::vec2(0.0f));
     height_map_.surface().bind(0);
     behind_.bind(1);
     mesh_->draw();

@@ -1,12 +1,14 @@
 #include "effects/scene/OpaquePass.h"
 
+#include <string>
+#include <vector>
+
 #include "effects/gl/EmptyVertexArray.h"
 
 namespace effects {
 
 OpaquePass::OpaquePass()
     : objects_("opaque.objects", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"}),
-      ground_("opaque.ground", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"}, {"GROUND"}),
       sky_(gl::Program::from_files("opaque.sky", {"common/fullscreen.vert.glsl", "scene/sky.frag.glsl"})) {}
 
 void OpaquePass::render(const FrameContext& frame) {
@@ -26,7 +28,11 @@ void OpaquePass::render(const FrameContext& frame) {
     glCullFace(GL_BACK);
     const bool line_lights = frame.scene.lighting.has_line_lights();
     const gl::Program& objects = objects_.get(frame.scene.quality, line_lights);
-    const gl::Program& ground = ground_.get(frame.scene.quality, line_lights);
+    if (!ground_)
+        ground_.emplace("opaque.ground", std::vector<std::string_view>{"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"},
+                        std::vector<std::string>{"GROUND", "ROAD_COUNT " +
+                                                               std::to_string(frame.scene.geometry.ground_road_count())});
+    const gl::Program& ground = ground_->get(frame.scene.quality, line_lights);
     for (const gl::Program* p : {&objects, &ground}) {
         frame.scene.lighting.apply(*p);
         p->set("u_view_proj", frame.camera.view_proj);

@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include "effects/gl/Program.h"
 #include "effects/scene/LitProgram.h"
 #include "effects/scene/Pass.h"
@@ -14,7 +16,8 @@ public:
     void render(const FrameContext& frame) override;
 
 private:
-    LitProgram objects_, ground_;
+    LitProgram objects_;
+    std::optional<LitProgram> ground_;  // made at the first frame: it needs the level's road count
     gl::Program sky_;
 };
 

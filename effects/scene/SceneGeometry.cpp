@@ -44,9 +44,10 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
     }
 }
 
+int SceneGeometry::ground_road_count() const { return std::min<int>(int(level_.roads.size()), kMaxRoads); }
+
 void SceneGeometry::apply_ground(const gl::Program& p) const {
-    int n = std::min<int>(int(level_.roads.size()), kMaxRoads);
-    p.set("u_road_count", n);
+    const int n = ground_road_count();
     for (int i = 0; i < n; ++i) {
         const sim::Rect& r = level_.roads[size_t(i)];
         p.set("u_roads[" + std::to_string(i) + "]", glm::vec4(r.min.x, r.min.y, r.max.x, r.max.y));

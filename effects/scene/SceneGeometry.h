@@ -32,8 +32,11 @@ public:
     // World-space bounds of the props (min = max = 0 without any).
     glm::vec3 props_min() const { return props_min_; }
     glm::vec3 props_max() const { return props_max_; }
-    // Uniforms the ground shader needs (roads, shore).
+    // Uniforms the ground shader needs (roads, shore), and how many roads it draws: its
+    // ROAD_COUNT, compiled in so that the loop over them unrolls (a software rasteriser
+    // reads a uniform array at a varying index lane by lane).
     void apply_ground(const gl::Program& program) const;
+    int ground_road_count() const;
     const GpuModel& sea() const { return sea_; }
 
 private:

@@ -84,7 +84,7 @@ float sky_visibility(vec3 world_pos, vec3 n) {
 const float kIndoorAmbient = 0.5;
 
 vec3 fresnel_schlick(float cos_theta, vec3 f0) {
-    return f0 + (1.0 - f0) * pow(1.0 - clamp(cos_theta, 0.0, 1.0), 5.0);
+    return f0 + (1.0 - f0) * pow5(1.0 - clamp(cos_theta, 0.0, 1.0));
 }
 
 // GGX normal distribution with Smith-Schlick visibility, for the sun's highlight.

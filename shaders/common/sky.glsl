@@ -4,17 +4,25 @@ uniform vec3 u_sun_dir;       // towards the sun, normalised
 uniform vec3 u_sun_radiance;  // what the sun adds to a lit surface
 uniform float u_sky_intensity;
 
+// Whole powers by multiplication: pow() is a log and an exponential on a software
+// rasteriser, and these run for nearly every pixel (sky, fog, reflections).
+float pow5(float x) {
+    float x2 = x * x;
+    return x2 * x2 * x;
+}
+
 vec3 sky_radiance(vec3 dir, bool with_sun_disk) {
     dir = normalize(dir);
     float y = dir.y;
     vec3 zenith = vec3(0.09, 0.22, 0.55);
     vec3 horizon = vec3(0.52, 0.66, 0.85);
     vec3 ground = vec3(0.16, 0.17, 0.18);
-    float t = pow(1.0 - clamp(y, 0.0, 1.0), 5.0);
+    float t = pow5(1.0 - clamp(y, 0.0, 1.0));
     vec3 sky = mix(zenith, horizon, t);
     if (y < 0.0) sky = mix(horizon, ground, clamp(-y * 6.0, 0.0, 1.0));
     float mu = max(dot(dir, u_sun_dir), 0.0);
-    vec3 glow = vec3(1.0, 0.82, 0.58) * (0.22 * pow(mu, 6.0) + 0.7 * pow(mu, 90.0));
+    float mu2 = mu * mu, mu8 = mu2 * mu2 * mu2 * mu2, mu16 = mu8 * mu8, mu64 = mu16 * mu16 * mu16 * mu16;
+    vec3 glow = vec3(1.0, 0.82, 0.58) * (0.22 * mu2 * mu2 * mu2 + 0.7 * mu64 * mu16 * mu8 * mu2);
     vec3 result = (sky + glow) * u_sky_intensity;
     if (with_sun_disk) result += smoothstep(0.99965, 0.99985, mu) * u_sun_radiance * 25.0;
     return result;

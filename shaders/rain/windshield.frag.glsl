@@ -14,7 +14,8 @@ uniform float u_aspect;
 uniform float u_refraction;
 uniform float u_blur_lod;  // mip of the scene behind a drop one metre from the eye
 uniform float u_rim;
-uniform int u_blade_count;
+// Two blades, always: a missing one has an empty span. (A loop to a uniform count
+// would read these arrays at a varying index, lane by lane on a software rasteriser.)
 uniform vec2 u_blade_pivot[2];
 uniform vec2 u_blade_dir[2];
 uniform vec2 u_blade_span[2];  // inner, outer radius of the rubber
@@ -31,7 +32,7 @@ float blades(vec2 p, out float arm) {
     float cover = 0.0;
     arm = 0.0;
     float aa = max(fwidth(p.x), fwidth(p.y));
-    for (int b = 0; b < u_blade_count; ++b) {
+    for (int b = 0; b < 2; ++b) {
         vec2 rel = p - u_blade_pivot[b];
         float along = dot(rel, u_blade_dir[b]);
         float across = abs(rel.x * u_blade_dir[b].y - rel.y * u_blade_dir[b].x);
@@ -70,7 +71,7 @@ void main() {
         vec3 r = reflect(view, n);
         vec3 sky = sky_radiance(r, false) + u_sun_radiance * 4.0 * pow(max(dot(r, u_sun_dir), 0.0), 300.0);
         float cos_v = clamp(dot(-view, n), 0.0, 1.0);
-        float fresnel = 0.02 + 0.98 * pow(1.0 - cos_v, 5.0);
+        float fresnel = 0.02 + 0.98 * pow5(1.0 - cos_v);
         colour = mix(behind, sky, fresnel);
     }
     // Rubber nearly black; the arm a little lighter (painted metal catching the sky).

@@ -13,8 +13,11 @@ uniform float u_metallic;
 uniform vec3 u_emissive;  // the material's own light: a cabin lining lit by the light coming in
 
 // GROUND (a variant of the program): the terrain, coloured here as roads (rectangles
-// in xz), grass, the quay's concrete and the sea bed; otherwise the vertex colour.
-uniform int u_road_count;
+// in xz, ROAD_COUNT of them), grass, the quay's concrete and the sea bed; otherwise the
+// vertex colour.
+#ifndef ROAD_COUNT
+#define ROAD_COUNT 0
+#endif
 uniform vec4 u_roads[16];  // min.xz, max.xz
 uniform float u_shore_z;
 uniform float u_sea_level;
@@ -53,7 +56,7 @@ vec3 ground_colour(vec3 p, out float roughness) {
         c = mix(vec3(0.10, 0.11, 0.08), vec3(0.28, 0.25, 0.18), smoothstep(-2.0, -5.0, p.y)) * (0.8 + 0.4 * n);
         roughness = 0.9;
     }
-    for (int i = 0; i < u_road_count; ++i) {
+    for (int i = 0; i < ROAD_COUNT; ++i) {
         vec4 r = u_roads[i];
         if (p.x >= r.x && p.x <= r.z && p.z >= r.y && p.z <= r.w) {
             c = vec3(0.045, 0.045, 0.05) * (0.85 + 0.3 * n);

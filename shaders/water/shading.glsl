@@ -16,7 +16,7 @@ const vec3 kAbsorbPerMetre = vec3(0.45, 0.12, 0.09);  // red goes first: the sea
 
 vec3 deep_water_colour() { return vec3(0.004, 0.03, 0.045) * u_sky_intensity; }
 
-float water_fresnel(float cos_v) { return 0.02 + 0.98 * pow(1.0 - clamp(cos_v, 0.0, 1.0), 5.0); }
+float water_fresnel(float cos_v) { return 0.02 + 0.98 * pow5(1.0 - clamp(cos_v, 0.0, 1.0)); }
 
 vec3 world_from_depth(vec2 uv, float depth) {
     vec4 p = u_inv_view_proj * vec4(vec3(uv, depth) * 2.0 - 1.0, 1.0);
