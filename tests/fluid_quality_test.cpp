@@ -1,7 +1,7 @@
-// The analytic quality harness (specs/fluid.md, "Beyond the seed"): particles filling
-// a sphere and a box in front of the camera, their reconstructed front surface against
-// the exact one per smoothing method, and the secant trace's exit rays against the
-// exact double refraction through the sphere.
+// The analytic quality harness (docs/effects/fluid.md, "Deliberate deviations and
+// why"): particles filling a sphere and a box in front of the camera, their
+// reconstructed front surface against the exact one per smoothing method, and the
+// secant trace's exit rays against the exact double refraction through the sphere.
 #include <cstdio>
 #include <memory>
 

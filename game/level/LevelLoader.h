@@ -24,7 +24,7 @@
 //     "car":  {"asset": "car.gltf",  "position": [x, y, z], "heading_deg": 0},    required
 //     "boat": {"asset": "boat.gltf", "position": [x, y, z], "heading_deg": -90},  required
 //     "tank_spot": [22, 1.5, 36],        required: where the fluid tank stands
-//     "fluid": {                         optional: the glass tank of liquid (specs/fluid.md)
+//     "fluid": {                         optional: the glass tank (docs/effects/fluid.md)
 //       "particle_count": 2400,          1..200000, must fit the tank at the rest spacing
 //       "particle_radius_m": 0.04,       (0, 1]
 //       "tank_size_m": [1.6, 1.1, 1.6],  inner size, each (0, 20]
@@ -34,7 +34,7 @@
 //       "smoothing": {"method": "plane_fit", "kernel_size": 9, "iterations": 3}
 //     },                                   method plane_fit | bilateral | narrow_range;
 //                                          kernel odd 3..15; iterations 1..64
-//     "dust": {                          optional: dusty props (specs/dust.md)
+//     "dust": {                          optional: dusty props (docs/effects/dust.md)
 //       "fibre_image": "dust_fibres.png",   required: a binarised fibre image among the assets
 //       "fibre_slices": 3,               slices stacked in the image, 1..16 (default 1)
 //       "preset": "dust",                dust | sand | mould (default dust)
