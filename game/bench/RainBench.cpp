@@ -15,6 +15,7 @@
 #include "effects/rain/ReferenceHeightMap.h"
 #include "effects/rain/SurfaceReadback.h"
 #include "effects/Renderer.h"
+#include "game/bench/BenchSupport.h"
 #include "game/capture/FrameCapture.h"
 #include "game/level/LevelLoader.h"
 #include "game/session/GameSession.h"
@@ -26,8 +27,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 double cpu_seconds(clockid_t clock) {
     timespec ts{};
     clock_gettime(clock, &ts);
@@ -37,12 +36,6 @@ double cpu_seconds(clockid_t clock) {
 double thread_cpu_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
 // The whole process's: with llvmpipe, what its threads spend on the "GPU" path.
 double process_cpu_seconds() { return cpu_seconds(CLOCK_PROCESS_CPUTIME_ID); }
-
-std::string fmt(const char* format, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
