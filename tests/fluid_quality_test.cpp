@@ -7,22 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "game/bench/FluidBench.h"
-#include "game/platform/HeadlessContext.h"
 
 namespace {
 
 constexpr int kWidth = 320, kHeight = 240;
 
-class FluidQualityTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
-    void SetUp() override { context_->make_current(); }
-    static std::unique_ptr<game::HeadlessContext> context_;
-};
-
-std::unique_ptr<game::HeadlessContext> FluidQualityTest::context_;
+class FluidQualityTest : public HeadlessTest {};
 
 game::SmoothingQuality measured(game::QualityShape shape, effects::SmoothingMethod method) {
     game::SmoothingQuality q =

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "effects/Renderer.h"
 #include "effects/rain/DropHeightMap.h"
 #include "effects/rain/MetaballReference.h"
@@ -20,7 +21,6 @@
 #include "effects/rain/SurfaceReadback.h"
 #include "game/capture/FrameCapture.h"
 #include "game/capture/ImageFiles.h"
-#include "game/platform/HeadlessContext.h"
 #include "game/session/GameSession.h"
 #include "sim/player/CameraRig.h"
 #include "sim/rain/RainSim.h"
@@ -43,13 +43,7 @@ effects::RainPass* rain_pass(const effects::Renderer& r) {
     return nullptr;
 }
 
-class RainRenderTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
-    static std::unique_ptr<game::HeadlessContext> context_;
-};
-std::unique_ptr<game::HeadlessContext> RainRenderTest::context_;
+class RainRenderTest : public HeadlessTest {};
 
 TEST_F(RainRenderTest, ALoneDropIsAHemisphereOfItsRadius) {
     const glm::vec2 glass(0.064f, 0.032f);  // 0.125 mm texels
