@@ -1,4 +1,5 @@
 // Frame capture: PNG files, EXR layers, frame comparison and image statistics.
+#include "ErrorMessage.h"
 #include "game/capture/ExrWriter.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
@@ -86,16 +87,6 @@ void write_with_oiio(const fs::path& path, int width, int height, int channels,
     ASSERT_TRUE(out->close());
 }
 
-template <typename F>
-std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "(no exception)";
-}
-
 }  // namespace
 
 TEST(ImageFiles, PngRoundTripKeepsEveryByteAndCreatesTheDirectory) {
@@ -154,23 +145,23 @@ TEST(ImageFiles, ReadPngRefusesMissingGarbageAndHugeFilesNamingThem) {
     TempDir dir;
     const fs::path missing = dir.path() / "missing.png";
     EXPECT_THROW(game::read_png(missing), std::runtime_error);
-    EXPECT_NE(error_of([&] { game::read_png(missing); }).find(missing.string()), std::string::npos);
+    EXPECT_NE(message_of([&] { game::read_png(missing); }).find(missing.string()), std::string::npos);
 
     const fs::path garbage = dir.path() / "garbage.png";
     std::ofstream(garbage) << "this is not a PNG file";
-    const std::string garbage_error = error_of([&] { game::read_png(garbage); });
+    const std::string garbage_error = message_of([&] { game::read_png(garbage); });
     EXPECT_NE(garbage_error.find(garbage.string()), std::string::npos) << garbage_error;
 
     const fs::path truncated = dir.path() / "truncated.png";
     game::write_png(truncated, gradient(64, 64));
     fs::resize_file(truncated, fs::file_size(truncated) / 2);
-    const std::string truncated_error = error_of([&] { game::read_png(truncated); });
+    const std::string truncated_error = message_of([&] { game::read_png(truncated); });
     EXPECT_NE(truncated_error.find(truncated.string()), std::string::npos) << truncated_error;
 
     const fs::path huge = dir.path() / "huge.png";
     write_with_oiio(huge, game::kMaxImageSide + 1, 1, 1,
                     std::vector<std::uint8_t>(std::size_t(game::kMaxImageSide) + 1, 0));
-    const std::string huge_error = error_of([&] { game::read_png(huge); });
+    const std::string huge_error = message_of([&] { game::read_png(huge); });
     EXPECT_NE(huge_error.find(huge.string()), std::string::npos) << huge_error;
     EXPECT_NE(huge_error.find("8193x1"), std::string::npos) << huge_error;
 }
@@ -181,7 +172,7 @@ TEST(ImageFiles, WriteToUnwritablePathThrowsAndLeavesNoFile) {
     // not get around this, unlike permissions.
     std::ofstream(dir.path() / "blocker") << "x";
     const fs::path under_file = dir.path() / "blocker" / "frame.png";
-    const std::string error = error_of([&] { game::write_png(under_file, solid(2, 2, 1, 2, 3)); });
+    const std::string error = message_of([&] { game::write_png(under_file, solid(2, 2, 1, 2, 3)); });
     EXPECT_NE(error.find(under_file.string()), std::string::npos) << error;
     EXPECT_FALSE(fs::exists(under_file));
 
@@ -392,7 +383,7 @@ TEST(ExrWriter, BadLayersAndUnwritablePathsThrowAndLeaveNoFile) {
 
     std::ofstream(dir.path() / "blocker") << "x";
     const fs::path unwritable = dir.path() / "blocker" / "f.exr";
-    const std::string error = error_of(
+    const std::string error = message_of(
         [&] { game::write_exr(unwritable, 2, 2, {{"", 1, std::vector<float>(4, 1.0f)}}); });
     EXPECT_NE(error.find(unwritable.string()), std::string::npos) << error;
     EXPECT_FALSE(fs::exists(unwritable));

@@ -94,6 +94,11 @@ TEST_F(Cli, HelpNamesEveryCommandAndExitCode) {
     EXPECT_EQ(r.code, 0);
     for (const char* w : {"play", "record", "replay", "timedemo", "bench", "--quality", "exit codes"})
         EXPECT_NE(r.output.find(w), std::string::npos) << w;
+    // auto's render scales as the resolution controller has them (0.35..1)
+    char scales[32];
+    const game::ResolutionController::Options auto_scales;
+    std::snprintf(scales, sizeof scales, "(%g..%g)", double(auto_scales.min_scale), double(auto_scales.max_scale));
+    EXPECT_NE(r.output.find(std::string("render scale ") + scales), std::string::npos) << r.output;
     EXPECT_EQ(run("--version").code, 0);
     EXPECT_EQ(run("fly").code, 2);
     EXPECT_EQ(run("replay x.replay --fast").code, 2);

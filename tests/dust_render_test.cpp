@@ -17,10 +17,10 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "RenderStage.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
-#include "game/platform/HeadlessContext.h"
 #include "sim/dust/DustField.h"
 
 namespace {
@@ -96,13 +96,7 @@ sim::CameraView close_view() {
 
 }  // namespace
 
-class DustRenderTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
-    static std::unique_ptr<game::HeadlessContext> context_;
-};
-std::unique_ptr<game::HeadlessContext> DustRenderTest::context_;
+class DustRenderTest : public HeadlessTest {};
 
 TEST_F(DustRenderTest, DustShowsOnTopsAndAClearedPatchShowsTheCrate) {
     RenderStage stage = dust_stage();

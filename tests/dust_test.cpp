@@ -1,4 +1,4 @@
-// The dust effect's CPU parts (seed 004, specs/dust.md): fibre statistics from an
+// The dust effect's CPU parts (seed 004, docs/effects/dust.md): fibre statistics from an
 // image, fibre growth, where dust settles (lobe times exposure to the sources), dust
 // cleared by thrown objects and shots as sim state, and bad input.
 #include <algorithm>

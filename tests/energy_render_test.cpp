@@ -17,6 +17,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "RenderStage.h"
 #include "SimTestLevel.h"
 #include "effects/energy/EnergyPass.h"
@@ -25,7 +26,6 @@
 #include "sim/weapon/Weapon.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
-#include "game/platform/HeadlessContext.h"
 #include "sim/core/Rng.h"
 #include "sim/weapon/EnergyField.h"
 
@@ -58,15 +58,10 @@ float window_depth(const effects::Camera& cam, glm::vec3 p) {
     return clip.z / clip.w * 0.5f + 0.5f;
 }
 
-class EnergyRenderTest : public ::testing::Test {
+class EnergyRenderTest : public HeadlessTest {
 protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
-    static std::unique_ptr<game::HeadlessContext> context_;
     effects::EnergyPass pass;
 };
-std::unique_ptr<game::HeadlessContext> EnergyRenderTest::context_;
-
 TEST_F(EnergyRenderTest, ClosedFormMatchesQuadratureAwayFromTheSingularPoints) {
     constexpr int W = 64, H = 48;
     effects::EnergyProbe probe(W, H);

@@ -18,10 +18,10 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "RenderStage.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
-#include "game/platform/HeadlessContext.h"
 #include "game/replay/InputScript.h"
 #include "sim/weapon/Weapon.h"
 
@@ -152,13 +152,7 @@ constexpr int kLit = 40;                    // gain over the frame without the s
 // A hidden point gains no more than kDark once kBleedPx from the corner's edge (bloom bleeds).
 constexpr int kDark = 2, kBleedPx = 20;
 
-class EnergySceneTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
-    static std::unique_ptr<game::HeadlessContext> context_;
-};
-std::unique_ptr<game::HeadlessContext> EnergySceneTest::context_;
+class EnergySceneTest : public HeadlessTest {};
 
 // Fired from the car at rest on the shore road, along +x: the ball just out of the
 // muzzle, then the beam half a second on, both seen from the warehouse's side of the road.

@@ -1,28 +1,20 @@
-// The analytic quality harness (specs/fluid.md, "Beyond the seed"): particles filling
-// a sphere and a box in front of the camera, their reconstructed front surface against
-// the exact one per smoothing method, and the secant trace's exit rays against the
-// exact double refraction through the sphere.
+// The analytic quality harness (docs/effects/fluid.md, "Deliberate deviations and
+// why"): particles filling a sphere and a box in front of the camera, their
+// reconstructed front surface against the exact one per smoothing method, and the
+// secant trace's exit rays against the exact double refraction through the sphere.
 #include <cstdio>
 #include <memory>
 
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "game/bench/FluidBench.h"
-#include "game/platform/HeadlessContext.h"
 
 namespace {
 
 constexpr int kWidth = 320, kHeight = 240;
 
-class FluidQualityTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
-    void SetUp() override { context_->make_current(); }
-    static std::unique_ptr<game::HeadlessContext> context_;
-};
-
-std::unique_ptr<game::HeadlessContext> FluidQualityTest::context_;
+class FluidQualityTest : public HeadlessTest {};
 
 game::SmoothingQuality measured(game::QualityShape shape, effects::SmoothingMethod method) {
     game::SmoothingQuality q =

@@ -15,12 +15,12 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "RenderStage.h"
 #include "SimTestLevel.h"
 #include "effects/fluid/FluidPass.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
-#include "game/platform/HeadlessContext.h"
 #include "sim/fluid/FluidTank.h"
 #include "sim/objects/ThrownObjects.h"
 
@@ -71,12 +71,10 @@ int pixels_differing(const game::ImageRGBA8& a, const game::ImageRGBA8& b, float
     return n;
 }
 
-class FluidRenderTest : public ::testing::Test {
+class FluidRenderTest : public HeadlessTest {
 protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
     void SetUp() override {
-        context_->make_current();
+        HeadlessTest::SetUp();
         stage_ = std::make_unique<RenderStage>(
             tank_level(), StageOptions{.width = kWidth, .height = kHeight, .passes = kTankFrame});
         for (int t = 0; t < 45; ++t) stage_->world().step({});  // settled
@@ -92,12 +90,9 @@ protected:
     }
     effects::FluidPass& fluid_pass() { return stage_->pass<effects::FluidPass>(); }
 
-    static std::unique_ptr<game::HeadlessContext> context_;
     std::unique_ptr<RenderStage> stage_;
     const effects::Camera camera_ = effects::make_camera(tank_view(), float(kWidth) / float(kHeight));
 };
-
-std::unique_ptr<game::HeadlessContext> FluidRenderTest::context_;
 
 TEST_F(FluidRenderTest, TheTankRefractsAndTintsOnlyInsideItsRectangle) {
     const game::ImageRGBA8 without = render(false);
@@ -247,7 +242,7 @@ TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {
 // it, and the stone inside, are bent through the front and back surfaces and tinted.
 class FluidCloseUpTest : public FluidRenderTest {
 protected:
-    void SetUp() override { context_->make_current(); }
+    void SetUp() override { HeadlessTest::SetUp(); }  // no settled tank: each test makes its own
 };
 
 // 2.6 m from the tank's centre, off to the side of the pier's axis, at the liquid's

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "ErrorMessage.h"
 #include "SimTestLevel.h"
 #include "game/level/LevelError.h"
 #include "game/session/GameSession.h"
@@ -46,15 +47,6 @@ float highest(const sim::ParticleFluid& f) {
     float y = 0.0f;
     for (const glm::vec3& x : f.positions()) y = std::max(y, x.y);
     return y;
-}
-
-std::string error_of(const std::function<void()>& fn) {
-    try {
-        fn();
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    }
-    return "";
 }
 
 sim::LevelDesc tank_level(bool on_boat = false) {
@@ -134,20 +126,21 @@ TEST(ParticleFluid, SameStateForOneAndTwoThreads) {
 }
 
 TEST(ParticleFluid, RefusesUnusableParametersNamingThem) {
+    const auto refusal = [](auto&& f) { return message_of<std::invalid_argument>(f); };
     sim::ParticleFluidParams p;
     p.particle_radius_m = 0.0f;
-    EXPECT_NE(error_of([&] { sim::ParticleFluid f(p); }).find("particle_radius_m"), std::string::npos);
+    EXPECT_NE(refusal([&] { sim::ParticleFluid f(p); }).find("particle_radius_m"), std::string::npos);
     p = {};
     p.solver_iterations = 0;
-    EXPECT_NE(error_of([&] { sim::ParticleFluid f(p); }).find("solver_iterations"), std::string::npos);
+    EXPECT_NE(refusal([&] { sim::ParticleFluid f(p); }).find("solver_iterations"), std::string::npos);
     p = {};
     p.box_size_m.y = std::nanf("");
-    EXPECT_NE(error_of([&] { sim::ParticleFluid f(p); }).find("tank size"), std::string::npos);
-    EXPECT_NE(error_of([] { sim::fill_block({0, 0, 0}, {0.5f, 0.5f, 0.5f}, 0.05f, 1000, 1); }).find("does not fit"),
+    EXPECT_NE(refusal([&] { sim::ParticleFluid f(p); }).find("tank size"), std::string::npos);
+    EXPECT_NE(refusal([] { sim::fill_block({0, 0, 0}, {0.5f, 0.5f, 0.5f}, 0.05f, 1000, 1); }).find("does not fit"),
               std::string::npos);
     sim::FluidTankDesc d = tank_level().fluid;
     d.particle_count = 0;
-    EXPECT_NE(error_of([&] { sim::FluidTank t(d, {}, 1); }).find("particle_count"), std::string::npos);
+    EXPECT_NE(refusal([&] { sim::FluidTank t(d, {}, 1); }).find("particle_count"), std::string::npos);
 }
 
 TEST(AnisotropicKernels, EigenDecompositionReconstructsTheMatrix) {

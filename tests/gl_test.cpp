@@ -1,4 +1,5 @@
 // GL wrappers on a real headless context (Mesa llvmpipe here and in CI).
+#include "ErrorMessage.h"
 #include "effects/gl/Buffer.h"
 #include "effects/gl/DebugGroup.h"
 #include "effects/gl/DebugOutput.h"
@@ -37,16 +38,6 @@ uniform vec4 u_colour;
 out vec4 colour;
 void main() { colour = u_colour; }
 )";
-
-template <typename F>
-std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "(no exception)";
-}
 
 std::array<int, 4> rgba_at(const game::ImageRGBA8& image, int x, int y) {
     const std::uint8_t* p = &image.pixels[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4];
@@ -217,7 +208,7 @@ void main() {
 }
 
 TEST_F(GlTest, CompileErrorNamesTheFileAndQuotesTheLog) {
-    const std::string error = error_of([] {
+    const std::string error = message_of([] {
         Program::from_sources("broken", {{GL_VERTEX_SHADER, kFullScreenVert, "test/fullscreen.vert.glsl"},
                                          {GL_FRAGMENT_SHADER, R"(#version 450 core
 out vec4 colour;
@@ -234,7 +225,7 @@ void main() {
 }
 
 TEST_F(GlTest, LinkErrorNamesTheProgramAndItsFiles) {
-    const std::string error = error_of([] {
+    const std::string error = message_of([] {
         Program::from_sources("unlinked", {{GL_VERTEX_SHADER, kFullScreenVert, "a.vert.glsl"},
                                            {GL_FRAGMENT_SHADER, R"(#version 450 core
 vec4 shade();  // declared, defined nowhere
@@ -249,7 +240,7 @@ void main() { colour = shade(); }
 }
 
 TEST_F(GlTest, ProgramFromFilesNamesMissingShadersAndStages) {
-    const std::string error = error_of(
+    const std::string error = message_of(
         [] { Program::from_files("missing", {"test/does_not_exist.frag.glsl"}); });
     EXPECT_NE(error.find("shaders/test/does_not_exist.frag.glsl"), std::string::npos) << error;
     EXPECT_NE(error.find("'missing'"), std::string::npos) << error;
@@ -328,7 +319,7 @@ void main() {
 
 TEST_F(GlTest, IncompleteFramebufferNamesItsStatus) {
     Framebuffer empty = Framebuffer::create("nothing attached");
-    const std::string error = error_of([&] { empty.check_complete(); });
+    const std::string error = message_of([&] { empty.check_complete(); });
     EXPECT_NE(error.find("'nothing attached'"), std::string::npos) << error;
     EXPECT_NE(error.find("GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT"), std::string::npos) << error;
 

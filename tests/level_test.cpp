@@ -18,6 +18,7 @@
 #include "game/DataPaths.h"
 #include "game/level/GltfModel.h"
 #include "game/level/LevelLoader.h"
+#include "game/session/GameSession.h"
 #include "sim/world/Terrain.h"
 
 namespace {
@@ -61,6 +62,28 @@ void expect_error(const std::function<void()>& load, const std::vector<std::stri
         std::string msg = e.what();
         for (const std::string& w : words) EXPECT_NE(msg.find(w), std::string::npos) << "'" << w << "' not in: " << msg;
         EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line expected: " << msg;
+    }
+}
+
+// One thing changed in the harbour level, and the words its LevelError must contain.
+struct LevelEdit {
+    std::function<void(json&)> edit;
+    std::vector<std::string> words;
+};
+
+// Each edit of the harbour level, written to a file of its own under `tag`, must fail to
+// load with a message naming that file and containing the edit's words.
+void expect_each_refused(const std::string& tag, const json& base, const std::vector<LevelEdit>& cases) {
+    TempDir tmp(tag);
+    for (size_t i = 0; i < cases.size(); ++i) {
+        SCOPED_TRACE("case " + std::to_string(i));
+        json j = base;
+        cases[i].edit(j);
+        fs::path file = tmp.path / ("case" + std::to_string(i) + ".json");
+        spit(file, j.dump(1));
+        std::vector<std::string> words = cases[i].words;
+        words.push_back(file.string() + ": ");
+        expect_error([&] { game::load_level(file.string()); }, words);
     }
 }
 
@@ -219,11 +242,7 @@ TEST(LevelLoader, BrokenLevelFilesGiveOneClearError) {
 TEST(LevelLoader, OutOfRangeAndMalformedValues) {
     TempDir tmp("values");
     const json base = json::parse(slurp(harbour_json()));
-    struct Case {
-        std::function<void(json&)> edit;
-        std::vector<std::string> words;
-    };
-    const std::vector<Case> cases = {
+    expect_each_refused("edits", base, {
         {[](json& j) { j["props"][2]["scale"] = -1; }, {"props[2].scale: -1 is out of range (0, 1000]"}},
         {[](json& j) { j["world"]["half_extent_m"] = 0; }, {"world.half_extent_m: 0 is out of range (0, 2000]"}},
         {[](json& j) { j["rain"]["intensity"] = 1.5; }, {"rain.intensity: 1.5 is out of range [0, 1]"}},
@@ -247,17 +266,7 @@ TEST(LevelLoader, OutOfRangeAndMalformedValues) {
         {[](json& j) { j["car"].erase("asset"); }, {"car: missing required key 'asset'"}},
         {[](json& j) { j["props"][3] = 7; }, {"props[3]: expected an object"}},
         {[](json& j) { j.erase("world"); }, {"missing required key 'world'"}},
-    };
-    for (size_t i = 0; i < cases.size(); ++i) {
-        SCOPED_TRACE("case " + std::to_string(i));
-        json j = base;
-        cases[i].edit(j);
-        fs::path file = tmp.path / ("case" + std::to_string(i) + ".json");
-        spit(file, j.dump(1));
-        std::vector<std::string> words = cases[i].words;
-        words.push_back(file.string() + ": ");
-        expect_error([&] { game::load_level(file.string()); }, words);
-    }
+    });
     // NaN cannot be written in JSON and the parser refuses literals beyond a double, but
     // a double beyond a float is infinite once read.
     std::string text = slurp(harbour_json());
@@ -281,13 +290,7 @@ TEST(LevelLoader, OutOfRangeAndMalformedValues) {
 }
 
 TEST(LevelLoader, BadDustSectionFieldsAreNamed) {
-    TempDir tmp("dust");
-    const json base = json::parse(slurp(harbour_json()));
-    struct Case {
-        std::function<void(json&)> edit;
-        std::vector<std::string> words;
-    };
-    const std::vector<Case> cases = {
+    expect_each_refused("dust", json::parse(slurp(harbour_json())), {
         {[](json& j) { j["dust"]["preset"] = "snow"; }, {"dust.preset: 'snow' is not one of dust, sand, mould"}},
         {[](json& j) { j["dust"]["sources_per_prop"] = 17; }, {"dust.sources_per_prop: expected a whole number from 1 to 16"}},
         {[](json& j) { j["dust"]["fibre_slices"] = 0; }, {"dust.fibre_slices: expected a whole number from 1 to"}},
@@ -298,17 +301,35 @@ TEST(LevelLoader, BadDustSectionFieldsAreNamed) {
         {[](json& j) { j["dust"]["sources"] = 5; }, {"dust.sources: unknown key"}},
         {[](json& j) { j["props"][1]["dust"] = 3; }, {"props[1].dust: expected true, false or a preset name"}},
         {[](json& j) { j["props"][1]["dust"] = "fur"; }, {"props[1].dust: 'fur' is not one of dust, sand, mould"}},
-    };
-    for (size_t i = 0; i < cases.size(); ++i) {
-        SCOPED_TRACE("case " + std::to_string(i));
-        json j = base;
-        cases[i].edit(j);
-        fs::path file = tmp.path / ("case" + std::to_string(i) + ".json");
-        spit(file, j.dump(1));
-        std::vector<std::string> words = cases[i].words;
-        words.push_back(file.string() + ": ");
-        expect_error([&] { game::load_level(file.string()); }, words);
-    }
+    });
+}
+
+// What the wave grid and the particle fluid refuse is refused at load, naming the key
+// (not later, when the world is made, naming only the sim's parameter).
+TEST(LevelLoader, WaterAndFluidValuesTheSimRefusesAreNamed) {
+    expect_each_refused("sim_ranges", json::parse(slurp(harbour_json())), {
+        {[](json& j) { j["water"]["damping_per_s"] = 1; }, {"water.damping_per_s: 1 is out of range [0, 1)"}},
+        {[](json& j) { j["water"]["damping_per_s"] = 5; }, {"water.damping_per_s: 5 is out of range [0, 1)"}},
+        {[](json& j) { j["fluid"]["particle_radius_m"] = 0.001; },
+         {"fluid.particle_radius_m: 0.001 is out of range (0.001, 1]"}},
+        {[](json& j) { j["fluid"]["particle_radius_m"] = 0; }, {"fluid.particle_radius_m: 0 is out of range (0.001, 1]"}},
+        {[](json& j) { j["fluid"]["tank_size_m"] = {1.6, 0.15, 1.6}; },
+         {"fluid.tank_size_m[1]: 0.15 m is less than 4 particle radii (0.16 m)"}},
+        {[](json& j) { j["fluid"]["particle_radius_m"] = 0.5; },
+         {"fluid.tank_size_m[0]: 1.6 m is less than 4 particle radii (2 m)"}},
+    });
+}
+
+// At the edges of those ranges the loader and the sim agree: what loads, runs.
+TEST(LevelLoader, WaterAndFluidValuesAtTheSimsLimitsLoadAndRun) {
+    json j = json::parse(slurp(harbour_json()));
+    j["water"]["damping_per_s"] = 0.99;
+    j["fluid"]["particle_radius_m"] = 0.04;
+    j["fluid"]["tank_size_m"] = {0.16, 0.16, 0.16};  // exactly 4 radii
+    j["fluid"]["particle_count"] = 1;
+    game::LoadedLevel level = game::load_level_text(harbour_json(), j.dump(1));
+    EXPECT_FLOAT_EQ(level.sim.water.damping_per_s, 0.99f);
+    EXPECT_NO_THROW(game::GameSession::start(std::move(level), 1));
 }
 
 // ---- glTF -> Model -----------------------------------------------------------------------

@@ -12,14 +12,15 @@
 
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "effects/Renderer.h"
 #include "effects/rain/DropHeightMap.h"
 #include "effects/rain/MetaballReference.h"
 #include "effects/rain/RainPass.h"
 #include "effects/rain/ReferenceHeightMap.h"
+#include "effects/rain/SurfaceReadback.h"
 #include "game/capture/FrameCapture.h"
 #include "game/capture/ImageFiles.h"
-#include "game/platform/HeadlessContext.h"
 #include "game/session/GameSession.h"
 #include "sim/player/CameraRig.h"
 #include "sim/rain/RainSim.h"
@@ -28,18 +29,6 @@
 namespace {
 
 constexpr int kWidth = 320, kHeight = 180;
-
-template <typename HeightMap>
-std::vector<effects::SurfaceSample> read_surface(const HeightMap& map) {
-    std::vector<float> rgba(size_t(map.width()) * size_t(map.height()) * 4);
-    glGetTextureImage(map.surface().id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
-    std::vector<effects::SurfaceSample> out(size_t(map.width()) * size_t(map.height()));
-    for (size_t k = 0; k < out.size(); ++k) {
-        const float x = rgba[4 * k], y = rgba[4 * k + 1];
-        out[k] = {{x, y, std::sqrt(std::max(1.0f - x * x - y * y, 0.0f))}, rgba[4 * k + 3] > 0.5f ? rgba[4 * k + 2] : 0.0f};
-    }
-    return out;
-}
 
 void maybe_write(const game::ImageRGBA8& img, const char* name) {
     if (const char* dir = std::getenv("SPINDRIFT_RAIN_PNG_DIR")) {
@@ -54,13 +43,7 @@ effects::RainPass* rain_pass(const effects::Renderer& r) {
     return nullptr;
 }
 
-class RainRenderTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
-    static std::unique_ptr<game::HeadlessContext> context_;
-};
-std::unique_ptr<game::HeadlessContext> RainRenderTest::context_;
+class RainRenderTest : public HeadlessTest {};
 
 TEST_F(RainRenderTest, ALoneDropIsAHemisphereOfItsRadius) {
     const glm::vec2 glass(0.064f, 0.032f);  // 0.125 mm texels
@@ -68,7 +51,7 @@ TEST_F(RainRenderTest, ALoneDropIsAHemisphereOfItsRadius) {
     const effects::RainMetaball drop{{0.032f, 0.016f}, r, 0.0f};
     effects::DropHeightMap map(512, 256);
     map.update(std::span(&drop, 1), glass, 1.0f);
-    const std::vector<effects::SurfaceSample> s = read_surface(map);
+    const std::vector<effects::SurfaceSample> s = effects::read_surface(map.surface());
     const auto at = [&](const std::vector<effects::SurfaceSample>& m, float u_m, float v_m) {
         return m[size_t(v_m / glass.y * 256.0f) * 512 + size_t(u_m / glass.x * 512.0f)];
     };
@@ -84,7 +67,7 @@ TEST_F(RainRenderTest, ALoneDropIsAHemisphereOfItsRadius) {
     effects::HeightCompression seed;
     seed.steps = 5;
     map.update(std::span(&drop, 1), glass, 1.0f, seed);
-    const std::vector<effects::SurfaceSample> c = read_surface(map);
+    const std::vector<effects::SurfaceSample> c = effects::read_surface(map.surface());
     EXPECT_NEAR(at(c, 0.032f, 0.016f).height_mm, at(s, 0.032f, 0.016f).height_mm, 0.01f);
 }
 
@@ -94,7 +77,7 @@ TEST_F(RainRenderTest, TwoEqualDropsMeetAtTheReferencesHeight) {
     const effects::RainMetaball drops[2] = {{{0.0284f, 0.016f}, r, 0.0f}, {{0.0356f, 0.016f}, r, 0.0f}};  // 1.8 R apart
     effects::DropHeightMap map(512, 256);
     map.update(drops, glass, 1.0f);
-    const std::vector<effects::SurfaceSample> fast = read_surface(map);
+    const std::vector<effects::SurfaceSample> fast = effects::read_surface(map.surface());
     const std::vector<effects::SurfaceSample> slow = effects::reference_surface(drops, glass, 512, 256);
     // Exact where they meet (to the height map's half floats)...
     const size_t mid = 128 * 512 + 256;
@@ -113,7 +96,7 @@ TEST_F(RainRenderTest, TwoDMetaballsFollowTheThreeDReference) {
     const std::vector<effects::RainMetaball> scene = effects::merged_drop_scene(size);
     effects::DropHeightMap map(256, 128);
     map.update(scene, size, 1.0f);
-    const std::vector<effects::SurfaceSample> fast = read_surface(map);
+    const std::vector<effects::SurfaceSample> fast = effects::read_surface(map.surface());
     const std::vector<effects::SurfaceSample> slow = effects::reference_surface(scene, size, 256, 128);
     size_t wet = 0;
     const double angle = effects::mean_normal_angle_deg(fast, slow, wet);
@@ -124,7 +107,7 @@ TEST_F(RainRenderTest, TwoDMetaballsFollowTheThreeDReference) {
     effects::HeightCompression seed;
     seed.steps = 5;
     map.update(scene, size, 1.0f, seed);
-    const std::vector<effects::SurfaceSample> compressed = read_surface(map);
+    const std::vector<effects::SurfaceSample> compressed = effects::read_surface(map.surface());
     const double compressed_angle = effects::mean_normal_angle_deg(compressed, slow, wet);
     EXPECT_GT(compressed_angle, angle + 1.0);  // 5.5 measured
     float peak = 0.0f, compressed_peak = 0.0f;
@@ -225,7 +208,7 @@ TEST_F(RainRenderTest, TheGpuReferenceMatchesTheCpuReference) {
         EXPECT_LT(worst_mm, 1e-3f);  // 0 measured, over 2769 and 2528 wet texels
         // Its normals, from the same heights, are the CPU's (to the surface's half floats).
         size_t wet_both = 0;
-        EXPECT_LT(effects::mean_normal_angle_deg(read_surface(gpu), cpu, wet_both), 0.1);  // 0.018 and 0.019 measured
+        EXPECT_LT(effects::mean_normal_angle_deg(effects::read_surface(gpu.surface()), cpu, wet_both), 0.1);  // 0.018 and 0.019 measured
         EXPECT_GE(wet_both, wet);
     }
 }

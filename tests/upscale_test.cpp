@@ -8,12 +8,12 @@
 #include <memory>
 #include <vector>
 
+#include "HeadlessTest.h"
 #include "effects/gl/EmptyVertexArray.h"
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 #include "game/capture/Readback.h"
-#include "game/platform/HeadlessContext.h"
 
 namespace {
 
@@ -21,12 +21,8 @@ using effects::gl::Framebuffer;
 using effects::gl::Program;
 using effects::gl::Texture;
 
-class UpscaleTest : public ::testing::Test {
+class UpscaleTest : public HeadlessTest {
 protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
-    void SetUp() override { context_->make_current(); }
-
     // `source` (w x h grey levels, row 0 at the bottom) upscaled 2x; the red channel of
     // the result, rows top-down.
     std::vector<int> upscale(const std::vector<uint8_t>& grey, int w, int h, float edge, float sharpness) {
@@ -55,10 +51,7 @@ protected:
         return red;
     }
 
-    static std::unique_ptr<game::HeadlessContext> context_;
 };
-
-std::unique_ptr<game::HeadlessContext> UpscaleTest::context_;
 
 constexpr int W = 16, H = 8;
 

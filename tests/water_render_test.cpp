@@ -16,6 +16,7 @@
 #include <glm/mat4x4.hpp>
 #include <gtest/gtest.h>
 
+#include "HeadlessTest.h"
 #include "RenderStage.h"
 #include "SimTestLevel.h"
 #include "effects/water/SplashSheetMesh.h"
@@ -23,7 +24,6 @@
 #include "effects/water/WaterPass.h"
 #include "effects/water/WaterSurfaceMesh.h"
 #include "game/capture/ImageFiles.h"
-#include "game/platform/HeadlessContext.h"
 #include "sim/objects/ThrownObjects.h"
 #include "sim/water/WaterSim.h"
 #include "sim/water/WaveGrid.h"
@@ -106,12 +106,10 @@ void maybe_write_png(const std::string& name, const game::ImageRGBA8& img) {
 
 }  // namespace
 
-class WaterRenderTest : public ::testing::Test {
+class WaterRenderTest : public HeadlessTest {
 protected:
-    static void SetUpTestSuite() { context_ = std::make_unique<game::HeadlessContext>(); }
-    static void TearDownTestSuite() { context_.reset(); }
     void SetUp() override {
-        context_->make_current();
+        HeadlessTest::SetUp();
         stage_ = std::make_unique<RenderStage>(
             make_test_level(), StageOptions{.width = kWidth, .height = kHeight, .passes = kWaterFrame});
         // Wind ripples would add detail everywhere that the comparisons below must
@@ -146,12 +144,9 @@ protected:
         return {int((ndc.x * 0.5f + 0.5f) * kWidth), int((0.5f - ndc.y * 0.5f) * kHeight)};
     }
 
-    static std::unique_ptr<game::HeadlessContext> context_;
     std::unique_ptr<RenderStage> stage_;
     effects::Camera camera_ = effects::make_camera(harbour_view(), float(kWidth) / float(kHeight));
 };
-
-std::unique_ptr<game::HeadlessContext> WaterRenderTest::context_;
 
 double area_xz(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
     return 0.5 * (double(b.x - a.x) * double(c.y - a.y) - double(b.y - a.y) * double(c.x - a.x));

@@ -20,6 +20,12 @@ std::string_view shader_source(std::string_view path) {
         if (name == path && !name.empty()) return text;
     throw std::runtime_error(\"no shader named shaders/\" + std::string(path));
 }
+std::vector<std::string_view> shader_paths() {
+    std::vector<std::string_view> paths;
+    for (const auto& [name, text] : kShaders)
+        if (!name.empty()) paths.push_back(name);
+    return paths;
+}
 }  // namespace effects::gl
 ")
 file(COPY_FILE ${OUT}.tmp ${OUT} ONLY_IF_DIFFERENT)

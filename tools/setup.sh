@@ -11,6 +11,7 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev
   libgtest-dev libbenchmark-dev libimgui-dev libstb-dev
   xvfb xauth
+  glslang-tools
 )
 missing=()
 for p in "${packages[@]}"; do

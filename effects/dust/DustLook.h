@@ -1,6 +1,7 @@
 #pragma once
-// How each deposit looks (specs/dust.md, "Beyond the seed"): the same fibre machinery
-// with other fibre statistics, colour and height for dust, sand and mould.
+// How each deposit looks (docs/effects/dust.md, "Deliberate deviations and why"): the
+// same fibre machinery with other fibre statistics, colour and height for dust, sand
+// and mould.
 #include "effects/dust/FibreVolume.h"
 #include "sim/dust/DustDesc.h"
 

@@ -1,10 +1,10 @@
 #pragma once
-// Dusty props (seed 004, specs/dust.md "Rendering"): over each dusty prop already in
-// the opaque scene, a stack of shells pushed out along the normal by the sim's dust
-// amount, each keeping the texels of its fibre layer that pass the fibre test and the
-// luminance clipping; fins on the edges where the surface is seen edge-on. Alpha
-// tested, depth written: part of the opaque scene. Without a sim::DustField it draws
-// nothing.
+// Dusty props (seed 004, docs/effects/dust.md "What is implemented"): over each dusty
+// prop already in the opaque scene, a stack of shells pushed out along the normal by
+// the sim's dust amount, each keeping the texels of its fibre layer that pass the fibre
+// test and the luminance clipping; fins on the edges where the surface is seen edge-on.
+// Alpha tested, depth written: part of the opaque scene. Without a sim::DustField it
+// draws nothing.
 #include <array>
 #include <memory>
 #include <optional>

@@ -1,7 +1,7 @@
 #pragma once
-// The energy beams as line lights (specs/energy.md, "Beyond the seed"): before the
-// opaque scene is lit, each shot in flight becomes one line light from its tail to
-// its head in the scene lighting, so walls, ground and props near it glow.
+// The energy beams as line lights (docs/effects/energy.md, "What is implemented"):
+// before the opaque scene is lit, each shot in flight becomes one line light from its
+// tail to its head in the scene lighting, so walls, ground and props near it glow.
 #include "effects/energy/EnergyView.h"
 #include "effects/scene/Pass.h"
 

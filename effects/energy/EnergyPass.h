@@ -1,9 +1,10 @@
 #pragma once
-// The energy wave (specs/energy.md, "Rendering"): after the water, each pixel of the
-// tiles some segment covers integrates the field in closed form between the eye and
-// the first opaque surface of the scene depth (which the water pass has written), and
-// adds the glow to the HDR scene colour before tone mapping; then a bloom: the glow at
-// quarter resolution, blurred, added over the same part of the screen.
+// The energy wave (docs/effects/energy.md, "What is implemented"): after the water,
+// each pixel of the tiles some segment covers integrates the field in closed form
+// between the eye and the first opaque surface of the scene depth (which the water pass
+// has written), and adds the glow to the HDR scene colour before tone mapping; then a
+// bloom: the glow at quarter resolution, blurred, added over the same part of the
+// screen.
 #include <span>
 #include <string_view>
 

@@ -1,8 +1,8 @@
 #pragma once
-// The fluid tank (specs/fluid.md, "Rendering"), after the water: ellipsoid depth maps
-// (front and back, body and splash), smoothing of the body's maps, normals, and
-// refraction through up to four surfaces over the scene's colour, then the glass.
-// Every step is scissored to the tank's screen rectangle.
+// The fluid tank (docs/effects/fluid.md, "What is implemented"), after the water:
+// ellipsoid depth maps (front and back, body and splash), smoothing of the body's maps,
+// normals, and refraction through up to four surfaces over the scene's colour, then the
+// glass. Every step is scissored to the tank's screen rectangle.
 #include <glm/vec4.hpp>
 
 #include "effects/fluid/FluidSmoothing.h"

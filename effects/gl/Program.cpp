@@ -122,15 +122,7 @@ Program Program::from_files(std::string_view label, const std::vector<std::strin
     std::vector<std::string> texts(paths.size());  // owns what the stages view
     for (size_t i = 0; i < paths.size(); ++i) {
         try {
-            texts[i] = shader_text(paths[i]);
-            if (!defines.empty()) {
-                const size_t version = texts[i].rfind("#version", 0) == 0 ? texts[i].find('\n') : std::string::npos;
-                if (version == std::string::npos)
-                    throw std::runtime_error("shaders/" + std::string(paths[i]) + ": defines need a #version first line");
-                std::string lines;
-                for (const std::string& d : defines) lines += "#define " + d + "\n";
-                texts[i].insert(version + 1, lines + "#line 2\n");
-            }
+            texts[i] = shader_text(paths[i], defines);
         } catch (const std::exception& e) {
             throw std::runtime_error("program '" + std::string(label) + "': " + e.what());
         }

@@ -1,6 +1,7 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace effects::gl {
 
@@ -12,5 +13,13 @@ std::string_view shader_source(std::string_view path);
 // text (recursively; a file is included once), and #line directives so compiler
 // messages point at the right line.
 std::string shader_text(std::string_view path);
+
+// shader_text with `defines` ("NAME" or "NAME VALUE") as #define lines right after the
+// #version line, followed by "#line 2": the text Program::from_files compiles. Throws
+// std::runtime_error naming the path if there are defines and no #version first line.
+std::string shader_text(std::string_view path, const std::vector<std::string>& defines);
+
+// The path under shaders/ of every embedded shader, sorted.
+std::vector<std::string_view> shader_paths();
 
 }  // namespace effects::gl

@@ -37,4 +37,16 @@ std::string shader_text(std::string_view path) {
     return out;
 }
 
+std::string shader_text(std::string_view path, const std::vector<std::string>& defines) {
+    std::string text = shader_text(path);
+    if (defines.empty()) return text;
+    const size_t version = text.rfind("#version", 0) == 0 ? text.find('\n') : std::string::npos;
+    if (version == std::string::npos)
+        throw std::runtime_error("shaders/" + std::string(path) + ": defines need a #version first line");
+    std::string lines;
+    for (const std::string& d : defines) lines += "#define " + d + "\n";
+    text.insert(version + 1, lines + "#line 2\n");
+    return text;
+}
+
 }  // namespace effects::gl

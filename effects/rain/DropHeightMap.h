@@ -1,13 +1,13 @@
 #pragma once
-// The seed's 2D-metaball height map of the glass (specs/rain.md, "Height map"): each
-// drop splatted additively as N(h) = 1 / (1 + (h/R)^4) from a precomputed profile,
-// then per texel a height and a normal. Beside the summed density N the splat adds
-// N^2 R, N^2 x^2 and N^2 (x = h/R), so a texel also knows the drop that dominates it:
-// its radius and how far off its centre the texel is. The texel is then taken as that
-// one 3D metaball, strong enough to give the summed density, and its height is where
-// that ball's field falls to T. This is exact for a lone drop (a hemisphere of its
-// radius) and for two equal drops meeting, and follows the CPU 3D reference
-// (MetaballReference) to 2.9 degrees on the merged-drop scene.
+// The seed's 2D-metaball height map of the glass (docs/effects/rain.md, "What is
+// implemented"): each drop splatted additively as N(h) = 1 / (1 + (h/R)^4) from a
+// precomputed profile, then per texel a height and a normal. Beside the summed density
+// N the splat adds N^2 R, N^2 x^2 and N^2 (x = h/R), so a texel also knows the drop
+// that dominates it: its radius and how far off its centre the texel is. The texel is
+// then taken as that one 3D metaball, strong enough to give the summed density, and its
+// height is where that ball's field falls to T. This is exact for a lone drop (a
+// hemisphere of its radius) and for two equal drops meeting, and follows the CPU 3D
+// reference (MetaballReference) to 2.9 degrees on the merged-drop scene.
 //
 // Per frame: clear and splat the sums (instanced quads, additive RGBA16F, depth-tested
 // against the wet tiles marked in a depth buffer: 5-7% off the splat); then the

@@ -1,6 +1,6 @@
 #pragma once
 // The slow reference the seed compares its compressed 2D metaballs with (seed 5.5,
-// specs/rain.md "How it is measured"): the same drops as 3D metaballs, each a field
+// docs/effects/rain.md "Benchmarks"): the same drops as 3D metaballs, each a field
 // N(d) = 1 / (1 + (d/R)^4) of the 3D distance to its centre on the glass, cut off at
 // kMetaballReach radii like the splats, and the water surface the iso-surface N = T
 // above the glass, found per texel by bisection on the CPU (one thread). A lone drop

@@ -1,9 +1,9 @@
 #pragma once
-// Windshield rain (specs/rain.md, "Rendering"): in the driver's view, the drops' height
-// map is built over the glass, and the windshield is drawn over the finished scene
-// (after the water, before tonemapping), each drop refracting a blurred copy of the
-// scene and reflecting the sky, with the wiper blades on top. Not in the driver's view,
-// or with a dry glass and parked wipers, it does nothing at all.
+// Windshield rain (docs/effects/rain.md, "What is implemented"): in the driver's view,
+// the drops' height map is built over the glass, and the windshield is drawn over the
+// finished scene (after the water, before tonemapping), each drop refracting a blurred
+// copy of the scene and reflecting the sky, with the wiper blades on top. Not in the
+// driver's view, or with a dry glass and parked wipers, it does nothing at all.
 #include <memory>
 
 #include "effects/gl/Framebuffer.h"

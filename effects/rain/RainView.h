@@ -1,8 +1,9 @@
 #pragma once
-// What the windshield rain renderer reads of the sim (specs/rain.md, "Rendering"):
-// the glass's size and shape, every drop and wiper particle as a 2D metaball in the
-// glass's coordinates, the wiper blades, and where the car and the eye are. Gathered
-// from the world's sim::RainSim each frame; tests and the benchmark fill it directly.
+// What the windshield rain renderer reads of the sim (docs/effects/rain.md, "What is
+// implemented"): the glass's size and shape, every drop and wiper particle as a 2D
+// metaball in the glass's coordinates, the wiper blades, and where the car and the eye
+// are. Gathered from the world's sim::RainSim each frame; tests and the benchmark fill
+// it directly.
 #include <vector>
 
 #include <glm/mat4x4.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // The frame's shared render targets: HDR colour, world normals and depth that the
-// opaque passes write, and copies of colour and depth for the passes that refract
-// what lies behind them (sea, fluid tank, windshield), and the tone-mapped display image.
+// opaque passes write, a copy of colour and depth that the water refracts (the fluid
+// and the rain keep copies of their own), and the tone-mapped display image.
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Texture.h"
 

@@ -26,6 +26,16 @@ void SprayRenderer::draw(const FrameContext& frame, std::span<const SprayDrop> d
     const Camera& cam = frame.camera;
     const glm::mat4 inv_view = glm::inverse(cam.view);
     const SceneTargets& t = frame.scene.targets;
+    if (t.colour().id() != colour_id_ || t.depth().id() != depth_id_) {
+        fbo_ = gl::Framebuffer::create("water.spray");
+        fbo_.attach_colour(0, t.colour());
+        fbo_.attach_depth(t.depth());
+        fbo_.check_complete();
+        colour_id_ = t.colour().id();
+        depth_id_ = t.depth().id();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, t.width(), t.height());
     program_.use();
     frame.scene.lighting.apply(program_);
     program_.set("u_view_proj", cam.view_proj);
@@ -38,14 +48,12 @@ void SprayRenderer::draw(const FrameContext& frame, std::span<const SprayDrop> d
     program_.set("u_opacity", look.opacity);
 
     // Premultiplied "over": drops are all nearly the same colour, so order hardly
-    // shows and no sort is needed. The scene's alpha and normals stay as they are.
+    // shows and no sort is needed. The scene's alpha stays as it is.
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     glDepthMask(GL_FALSE);
-    glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     vao_.bind();
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(drops.size()));
-    glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
 }

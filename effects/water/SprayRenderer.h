@@ -2,6 +2,7 @@
 // Spray droplets as camera-facing sprites: soft round discs, lit by the sky and the
 // sun (brighter looking towards it), blended over the scene without writing depth.
 #include "effects/gl/Buffer.h"
+#include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/VertexArray.h"
 #include "effects/scene/FrameContext.h"
@@ -18,14 +19,18 @@ class SprayRenderer {
 public:
     SprayRenderer();
 
-    // Uploads the drops and draws them into the bound scene framebuffer; sets and
-    // restores its own blend, depth-write and colour-mask state.
+    // Uploads the drops and draws them into the scene colour, tested against the scene
+    // depth, through a framebuffer of its own that has only those two attached: the
+    // spray writes no normal, so the scene's normals are no draw buffer of it and stay
+    // as they are. Sets and restores its own blend and depth-write state.
     void draw(const FrameContext& frame, std::span<const SprayDrop> drops, const SprayLook& look);
 
 private:
     gl::Program program_;
     gl::Buffer instances_;
     gl::VertexArray vao_;
+    gl::Framebuffer fbo_;  // scene colour and depth, re-made when the scene's targets are
+    GLuint colour_id_ = 0, depth_id_ = 0;
 };
 
 }  // namespace effects

@@ -79,9 +79,7 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     t.depth_copy().bind(1);
     shading_.shade(t, sheets);
 
-    // Spray over the shaded water, in the scene framebuffer (depth-tested, not written).
-    glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
-    glViewport(0, 0, t.width(), t.height());
+    // Spray over the shaded water, into the scene colour (depth-tested, not written).
     spray_.draw(frame, view.spray, look_.spray);
 }
 

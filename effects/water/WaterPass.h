@@ -1,5 +1,5 @@
 #pragma once
-// The harbour water (specs/water.md, "Rendering"): the wave grid's surface and the
+// The harbour water (docs/effects/water.md, "Rendering"): the wave grid's surface and the
 // open sea around it, the airborne splash sheets and the spray, drawn into the scene
 // targets after the opaque scene was copied (it refracts the copy). Without a
 // sim::WaterSim in the world it draws a flat sea.

@@ -24,9 +24,9 @@ public:
 
     // Binds the geometry framebuffer (scene depth, scene normal as output 0, the kind
     // target as output 1) with the kind target cleared. Follows resizes of the scene.
-    // The kind target (RG8, what a software rasteriser writes fastest): red 0 = no
-    // water, 0.5 = sea, 0.76..1 = splash sheet (more for a thicker film); green their
-    // foam weight.
+    // The kind target (GL_RGBA8, what a software rasteriser writes fastest): red 0 =
+    // no water, 0.5 = sea, 0.76..1 = splash sheet (more for a thicker film); green their
+    // foam weight; blue a sheet's opacity.
     void begin_geometry(const SceneTargets& targets);
     // Shades the water pixels into the scene colour: the sea, then the splash sheets
     // if there are any. The programs' uniforms (lighting, camera, scene copies, look)

@@ -18,6 +18,7 @@
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/ShadowPass.h"
 #include "effects/scene/SkyOcclusionPass.h"
+#include "game/bench/BenchSupport.h"
 #include "game/capture/FrameCapture.h"
 #include "game/level/LevelLoader.h"
 #include "game/session/GameSession.h"
@@ -29,14 +30,6 @@ namespace game {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-std::string fmt(const char* format, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 // The scene props that are the dusty ones: their placed model bounds match a dusty
 // prop's bounds (the sim knows them only as triangles).

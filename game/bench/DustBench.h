@@ -1,5 +1,5 @@
 #pragma once
-// Cost of the dusty props (seed 004, specs/dust.md "How it is measured"): the dust
+// Cost of the dusty props (seed 004, docs/effects/dust.md "Benchmarks"): the dust
 // pass over the warehouse props per frame against the same props drawn without dust,
 // fibre texture generation, and the accumulation (shadow maps and amounts) per prop.
 #include "game/bench/BenchReport.h"

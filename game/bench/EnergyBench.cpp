@@ -16,6 +16,7 @@
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
 #include "effects/scene/FrameContext.h"
+#include "game/bench/BenchSupport.h"
 #include "sim/weapon/EnergyField.h"
 #include "sim/world/World.h"
 
@@ -25,14 +26,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using sim::EnergySegment;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::string fmt(const char* format, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 std::string size_name(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 

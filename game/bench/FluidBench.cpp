@@ -15,6 +15,7 @@
 #include "effects/fluid/FluidPass.h"
 #include "effects/scene/Camera.h"
 #include "effects/scene/FrameContext.h"
+#include "game/bench/BenchSupport.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/session/GameSession.h"
 #include "sim/fluid/FluidScenes.h"
@@ -26,15 +27,7 @@ namespace game {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 constexpr float kDegPerRad = 57.2957795f;
-
-std::string fmt(const char* format, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 // The fluid pass alone over a plain background: scene targets, lighting and a camera.
 struct FluidStage {

@@ -1,5 +1,5 @@
 #pragma once
-// The fluid tank's measurements (specs/fluid.md, "How it is measured"): the analytic
+// The fluid tank's measurements (docs/effects/fluid.md, "Benchmarks"): the analytic
 // quality harness (particles filling a sphere or a box in front of the camera, errors
 // against the exact surface) and the bench cases reproducing the seed's tables 5.1-5.4.
 // Everything here needs a current GL context.

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "game/DataPaths.h"
+#include "game/bench/BenchSupport.h"
 #include "game/play/OffscreenScreen.h"
 #include "game/play/Timedemo.h"
 #include "game/replay/ReplayReader.h"
@@ -15,12 +16,6 @@ namespace game {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string fmt(const char* format, auto... values) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, format, values...);
-    return buf;
-}
 
 std::vector<fs::path> bundled_replays(bool quick) {
     const fs::path dir = data_dir() / "replays";

@@ -13,7 +13,9 @@
 #include "effects/rain/MetaballReference.h"
 #include "effects/rain/RainPass.h"
 #include "effects/rain/ReferenceHeightMap.h"
+#include "effects/rain/SurfaceReadback.h"
 #include "effects/Renderer.h"
+#include "game/bench/BenchSupport.h"
 #include "game/capture/FrameCapture.h"
 #include "game/level/LevelLoader.h"
 #include "game/session/GameSession.h"
@@ -25,8 +27,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
 double cpu_seconds(clockid_t clock) {
     timespec ts{};
     clock_gettime(clock, &ts);
@@ -36,12 +36,6 @@ double cpu_seconds(clockid_t clock) {
 double thread_cpu_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
 // The whole process's: with llvmpipe, what its threads spend on the "GPU" path.
 double process_cpu_seconds() { return cpu_seconds(CLOCK_PROCESS_CPUTIME_ID); }
-
-std::string fmt(const char* format, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -117,18 +111,6 @@ void bench_height_map(BenchReport& report, int frames) {
                 std::nullopt, false, std::to_string(balls.size()) + " metaballs; glFinish around the frames"});
 }
 
-template <typename HeightMap>
-std::vector<effects::SurfaceSample> read_back(const HeightMap& map) {
-    std::vector<float> rgba(size_t(map.width()) * size_t(map.height()) * 4);
-    glGetTextureImage(map.surface().id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
-    std::vector<effects::SurfaceSample> out(size_t(map.width()) * size_t(map.height()));
-    for (size_t k = 0; k < out.size(); ++k) {
-        const float x = rgba[4 * k], y = rgba[4 * k + 1];
-        out[k] = {{x, y, std::sqrt(std::max(1.0f - x * x - y * y, 0.0f))}, rgba[4 * k + 3] > 0.5f ? rgba[4 * k + 2] : 0.0f};
-    }
-    return out;
-}
-
 struct GpuTimes {
     std::vector<double> wall_s, cpu_s;
 };
@@ -172,7 +154,8 @@ void bench_reference(BenchReport& report, int runs) {
         time_gpu(r > 0 ? fast_t : warm_up, [&] { map.update(scene, size, 1.0f); });
         time_gpu(r > 0 ? gpu_ref_t : warm_up, [&] { reference.update(scene, size); });
     }
-    const std::vector<effects::SurfaceSample> fast = read_back(map), gpu_ref = read_back(reference);
+    const std::vector<effects::SurfaceSample> fast = effects::read_surface(map.surface());
+    const std::vector<effects::SurfaceSample> gpu_ref = effects::read_surface(reference.surface());
     std::vector<effects::SurfaceSample> cpu_ref;
     std::vector<double> cpu_ref_s;
     for (int r = 0; r <= runs; ++r) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "game/bench/BenchSupport.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/level/LevelLoader.h"
 #include "sim/core/Rng.h"
@@ -18,14 +19,6 @@ namespace game {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::string fmt(const char* format, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 // A grid already full of ring waves, so the step works on real numbers, not zeros.
 sim::WaveGrid busy_grid(int size) {

@@ -15,14 +15,6 @@
 namespace game {
 namespace {
 
-// Built by appending: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
-std::string quoted(const std::filesystem::path& path) {
-    std::string text(1, '\'');
-    text += path.string();
-    text += '\'';
-    return text;
-}
-
 std::string layer_title(const ExrLayer& layer) {
     return layer.name.empty() ? "the unnamed layer" : "layer '" + layer.name + "'";
 }
@@ -78,13 +70,7 @@ void write_exr(const std::filesystem::path& path, int width, int height,
                 throw std::invalid_argument(where + ": channel '" + name + "' appears twice");
     }
 
-    std::error_code error;
-    if (path.has_parent_path()) {
-        std::filesystem::create_directories(path.parent_path(), error);
-        if (error)
-            throw CaptureError(where + ": cannot create directory " +
-                                     quoted(path.parent_path()) + ": " + error.message());
-    }
+    create_parent_directories(path);
 
     Imf::Header header(width, height);
     header.compression() = Imf::ZIP_COMPRESSION;
@@ -112,7 +98,8 @@ void write_exr(const std::filesystem::path& path, int width, int height,
         file.setFrameBuffer(frame);
         file.writePixels(height);
     } catch (const std::exception& e) {
-        std::filesystem::remove(temporary, error);
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
         throw CaptureError(where + ": " + e.what());
     }
     replace_with(temporary, path);

@@ -16,7 +16,6 @@
 #include <system_error>
 
 namespace game {
-namespace {
 
 // Built by appending: GCC 12 warns falsely (-Wrestrict) on "'" + std::string.
 std::string quoted(const std::filesystem::path& path) {
@@ -25,6 +24,17 @@ std::string quoted(const std::filesystem::path& path) {
     text += '\'';
     return text;
 }
+
+void create_parent_directories(const std::filesystem::path& path) {
+    if (!path.has_parent_path()) return;
+    std::error_code error;
+    std::filesystem::create_directories(path.parent_path(), error);
+    if (error)
+        throw CaptureError("cannot write " + quoted(path) + ": cannot create directory " + quoted(path.parent_path()) +
+                           ": " + error.message());
+}
+
+namespace {
 
 void check_image(const std::filesystem::path& path, const ImageRGBA8& image) {
     if (image.width < 1 || image.height < 1 || image.width > kMaxImageSide ||
@@ -76,13 +86,7 @@ void replace_with(const std::filesystem::path& temporary, const std::filesystem:
 
 void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
     check_image(path, image);
-    std::error_code error;
-    if (path.has_parent_path()) {
-        std::filesystem::create_directories(path.parent_path(), error);
-        if (error)
-            throw CaptureError("cannot write " + quoted(path) + ": cannot create directory " +
-                                     quoted(path.parent_path()) + ": " + error.message());
-    }
+    create_parent_directories(path);
 
     // Encoded in memory, then written with every write checked: OpenImageIO's PNG
     // writer does not report a failed write (a full disk), which would otherwise put a

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <span>
+#include <string>
 
 namespace game {
 
@@ -21,6 +22,11 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image);
 // if it is missing, unreadable or larger than kMaxImageSide per side.
 ImageRGBA8 read_png(const std::filesystem::path& path);
 
+// For file writers' messages: the path in single quotes.
+std::string quoted(const std::filesystem::path& path);
+// For file writers: creates the folder `path` goes in, if it has one; throws
+// CaptureError ("cannot write 'path': cannot create directory ...") if that fails.
+void create_parent_directories(const std::filesystem::path& path);
 // For file writers: a unique temporary name in the same directory as `path` (so the
 // final rename stays on one file system), and moving it into place once it is flushed
 // to disk (throws CaptureError and removes the temporary if either fails).

@@ -9,6 +9,7 @@
 
 #include "effects/Renderer.h"
 #include "game/bench/BenchReport.h"
+#include "game/bench/BenchSupport.h"
 #include "game/bench/EnergyBench.h"
 #include "game/bench/RainBench.h"
 #include "game/bench/FluidBench.h"
@@ -28,8 +29,6 @@ namespace game {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // A busy, repeatable session: driving with turns, throws and shots.
 sim::TickInput bench_input(uint32_t tick) {

@@ -1,5 +1,6 @@
 #include "game/cli/Cli.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include "game/cli/Commands.h"
 #include "game/cli/ExitCode.h"
 #include "game/level/LevelError.h"
+#include "game/play/ResolutionController.h"
 #include "game/replay/InputScript.h"
 #include "game/replay/ReplayError.h"
 
@@ -18,6 +20,8 @@ namespace game {
 
 namespace {
 
+// The help text; {auto_scales} stands for auto's render scales, which come from the
+// resolution controller's own range (help_text()).
 constexpr const char* kHelp = R"(spindrift: a car-and-boat harbour game driving five real-time water and weather effects.
 
 usage: spindrift <command> [options]
@@ -55,7 +59,7 @@ commands:
 options:
   --level    a level name from levels/ (e.g. harbour) or a path to a level .json
   --threads  sim worker threads (1..64); results are identical for any count
-  --quality  low, medium, high or auto (default): medium with the render scale (0.4..1)
+  --quality  low, medium, high or auto (default): medium with the render scale ({auto_scales})
              lowered and raised to hold 30 ms frames
   --help, --version
 
@@ -72,6 +76,16 @@ exit codes:
 environment: SPINDRIFT_DATA sets the folder holding levels/ and replays/.
 )";
 
+std::string help_text() {
+    const ResolutionController::Options auto_scales;
+    char range[32];
+    std::snprintf(range, sizeof range, "%g..%g", double(auto_scales.min_scale), double(auto_scales.max_scale));
+    std::string text = kHelp;
+    const std::string mark = "{auto_scales}";
+    text.replace(text.find(mark), mark.size(), range);
+    return text;
+}
+
 }  // namespace
 
 bool display_available() {
@@ -83,14 +97,14 @@ bool display_available() {
 int run_cli(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty()) {
-        std::cerr << kHelp;
+        std::cerr << help_text();
         return kExitUsage;
     }
     const std::string command = args[0];
     std::vector<std::string> rest(args.begin() + 1, args.end());
     try {
         if (command == "--help" || command == "-h" || command == "help") {
-            std::cout << kHelp;
+            std::cout << help_text();
             return kExitOk;
         }
         if (command == "--version") {
@@ -99,7 +113,7 @@ int run_cli(int argc, char** argv) {
         }
         for (const std::string& a : rest)
             if (a == "--help" || a == "-h") {
-                std::cout << kHelp;
+                std::cout << help_text();
                 return kExitOk;
             }
         if (command == "play") return play_command(rest);

@@ -107,11 +107,13 @@ public:
         if (!std::isfinite(d) || !std::isfinite(float(d))) fail(where, "is not a finite number");
         return float(d);
     }
-    // In [lo, hi], or (lo, hi] when lo_open.
-    float number_in(const json& v, const std::string& where, float lo, float hi, bool lo_open = false) const {
+    // In [lo, hi]; the bound is left out at lo when lo_open, at hi when hi_open.
+    float number_in(const json& v, const std::string& where, float lo, float hi, bool lo_open = false,
+                    bool hi_open = false) const {
         float f = number(v, where);
-        if (f > hi || f < lo || (lo_open && f == lo))
-            fail(where, show(f) + " is out of range " + (lo_open ? "(" : "[") + show(lo) + ", " + show(hi) + "]");
+        if (f > hi || f < lo || (lo_open && f == lo) || (hi_open && f == hi))
+            fail(where, show(f) + " is out of range " + (lo_open ? "(" : "[") + show(lo) + ", " + show(hi) +
+                            (hi_open ? ")" : "]"));
         return f;
     }
     template <int N>
@@ -236,7 +238,8 @@ private:
     }
 
     // "water": {"grid_origin_xz": [x, z], "grid_size": 256, "grid_spacing_m": 0.5,
-    //           "wave_speed_mps": 2.5, "damping_per_s": 0.25}; the sim checks stability.
+    //           "wave_speed_mps": 2.5, "damping_per_s": 0.25 (a fraction lost per second,
+    //           [0, 1) as sim::WaveGrid refuses)}; the sim checks stability.
     void water_grid(const json& w, sim::LevelDesc& level) {
         r_.object(w, "water", {"grid_origin_xz", "grid_size", "grid_spacing_m", "wave_speed_mps", "damping_per_s"});
         sim::WaterGridDesc& g = level.water;
@@ -248,7 +251,7 @@ private:
         g.size = int(size.get<int64_t>());
         g.spacing_m = r_.number_in(r_.required(w, "water", "grid_spacing_m"), "water.grid_spacing_m", 0.01f, 100.0f);
         g.wave_speed_mps = r_.number_in(r_.required(w, "water", "wave_speed_mps"), "water.wave_speed_mps", 0.0f, 100.0f, true);
-        g.damping_per_s = r_.number_in(r_.required(w, "water", "damping_per_s"), "water.damping_per_s", 0.0f, 10.0f);
+        g.damping_per_s = r_.number_in(r_.required(w, "water", "damping_per_s"), "water.damping_per_s", 0.0f, 1.0f, false, true);
     }
 
     int whole_in(const json& v, const std::string& where, int lo, int hi) const {
@@ -261,7 +264,9 @@ private:
     //           "solver_iterations": 3, "body_neighbours": 12, "on": "pier" | "boat",
     //           "smoothing": {"method": "plane_fit" | "bilateral" | "narrow_range",
     //                         "kernel_size": 9 (odd, 3..15), "iterations": 3 (1..64)}}
-    // All keys optional; the sim checks that the particles fit the tank.
+    // All keys optional. The radius and the tank's size are held to what sim::ParticleFluid
+    // refuses (a radius in (0.001, 1] m, at least 4 radii of tank on each axis); the sim
+    // checks that the particles fit the tank.
     void fluid_tank(const json& f, sim::LevelDesc& level) {
         r_.object(f, "fluid", {"particle_count", "particle_radius_m", "tank_size_m", "solver_iterations",
                                "body_neighbours", "on", "smoothing"});
@@ -269,12 +274,16 @@ private:
         d.enabled = true;
         if (const json* v = LevelReader::optional(f, "particle_count")) d.particle_count = whole_in(*v, "fluid.particle_count", 1, 200000);
         if (const json* v = LevelReader::optional(f, "particle_radius_m"))
-            d.particle_radius_m = r_.number_in(*v, "fluid.particle_radius_m", 0.0f, 1.0f, true);
+            d.particle_radius_m = r_.number_in(*v, "fluid.particle_radius_m", 0.001f, 1.0f, true);
         if (const json* v = LevelReader::optional(f, "tank_size_m")) {
             d.inner_size_m = r_.vec<3>(*v, "fluid.tank_size_m");
-            for (int a = 0; a < 3; ++a)
-                if (!(d.inner_size_m[a] > 0.0f && d.inner_size_m[a] <= 20.0f))
-                    r_.fail(index_path("fluid.tank_size_m", size_t(a)), "expected a size in (0, 20] m");
+            const float least = 4.0f * d.particle_radius_m;
+            for (int a = 0; a < 3; ++a) {
+                const std::string where = index_path("fluid.tank_size_m", size_t(a));
+                if (!(d.inner_size_m[a] > 0.0f && d.inner_size_m[a] <= 20.0f)) r_.fail(where, "expected a size in (0, 20] m");
+                if (!(d.inner_size_m[a] >= least))
+                    r_.fail(where, show(d.inner_size_m[a]) + " m is less than 4 particle radii (" + show(least) + " m)");
+            }
         }
         if (const json* v = LevelReader::optional(f, "solver_iterations"))
             d.solver_iterations = whole_in(*v, "fluid.solver_iterations", 1, 20);

@@ -21,20 +21,27 @@
 //     "sun": {"direction": [0.45, 0.7, 0.35]},   optional; towards the sun, y > 0,
 //                                                  normalised by the loader
 //     "rain": {"intensity": 0.0},        optional, [0, 1]
+//     "water": {                         optional: the wave grid (docs/effects/water.md)
+//       "grid_origin_xz": [-40, 1],      world x, z of cell (0, 0)
+//       "grid_size": 256,                cells per side, 8..2048
+//       "grid_spacing_m": 0.5,           [0.01, 100]
+//       "wave_speed_mps": 2.5,           (0, 100]; the grid refuses an unstable speed and spacing
+//       "damping_per_s": 0.25            fraction of wave energy lost per second, [0, 1)
+//     },                                   all five required
 //     "car":  {"asset": "car.gltf",  "position": [x, y, z], "heading_deg": 0},    required
 //     "boat": {"asset": "boat.gltf", "position": [x, y, z], "heading_deg": -90},  required
 //     "tank_spot": [22, 1.5, 36],        required: where the fluid tank stands
-//     "fluid": {                         optional: the glass tank of liquid (specs/fluid.md)
+//     "fluid": {                         optional: the glass tank (docs/effects/fluid.md)
 //       "particle_count": 2400,          1..200000, must fit the tank at the rest spacing
-//       "particle_radius_m": 0.04,       (0, 1]
-//       "tank_size_m": [1.6, 1.1, 1.6],  inner size, each (0, 20]
+//       "particle_radius_m": 0.04,       (0.001, 1]
+//       "tank_size_m": [1.6, 1.1, 1.6],  inner size, each (0, 20] and at least 4 particle radii
 //       "solver_iterations": 3,          1..20
 //       "body_neighbours": 12,           fewer neighbours: splash; 1..60
 //       "on": "pier",                    "pier" (at tank_spot, its panes are solids) | "boat"
 //       "smoothing": {"method": "plane_fit", "kernel_size": 9, "iterations": 3}
 //     },                                   method plane_fit | bilateral | narrow_range;
 //                                          kernel odd 3..15; iterations 1..64
-//     "dust": {                          optional: dusty props (specs/dust.md)
+//     "dust": {                          optional: dusty props (docs/effects/dust.md)
 //       "fibre_image": "dust_fibres.png",   required: a binarised fibre image among the assets
 //       "fibre_slices": 3,               slices stacked in the image, 1..16 (default 1)
 //       "preset": "dust",                dust | sand | mould (default dust)

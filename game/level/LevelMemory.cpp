@@ -7,9 +7,9 @@ namespace {
 
 using std::to_string;
 
-// Wave grid (specs/water.md), per cell: the sim's two height layers, land mask, centre
-// weight and damping (17 bytes), the renderer's height texture and mipmapped slope
-// texture (~15 bytes) and the upload staging, rounded up.
+// Wave grid (docs/effects/water.md), per cell: the sim's two height layers, land mask,
+// centre weight and damping (17 bytes), the renderer's height texture and mipmapped
+// slope texture (~15 bytes) and the upload staging, rounded up.
 constexpr uint64_t kWaterBytesPerCell = 48;
 // Splash sheets, spray droplets and their GPU buffers: fixed by WaterParams, not the level.
 constexpr uint64_t kWaterFixedBytes = 16 * kMiB;
@@ -21,8 +21,8 @@ void charge_water(const sim::LevelDesc& level, MemoryBudget& budget) {
     budget.charge("water: splash sheets and spray", kWaterFixedBytes);
 }
 
-// Fluid tank (specs/fluid.md), per particle: the solver's state, neighbour lists and
-// cached gradients, and the renderer's anisotropic kernels and instance buffers.
+// Fluid tank (docs/effects/fluid.md), per particle: the solver's state, neighbour lists
+// and cached gradients, and the renderer's anisotropic kernels and instance buffers.
 constexpr uint64_t kFluidBytesPerParticle = 2048;
 
 void charge_fluid(const sim::LevelDesc& level, MemoryBudget& budget) {
@@ -31,7 +31,7 @@ void charge_fluid(const sim::LevelDesc& level, MemoryBudget& budget) {
     budget.charge("fluid: tank of " + to_string(n) + " particles", n * kFluidBytesPerParticle);
 }
 
-// Dust (specs/dust.md): the props' amounts on their resampled meshes, the sources'
+// Dust (docs/effects/dust.md): the props' amounts on their resampled meshes, the sources'
 // shadow maps and the 10-layer fibre volume with its mips. The meshes are only known
 // once the assets load; this bounds a warehouse's worth at the default spacing.
 constexpr uint64_t kDustFixedBytes = 48 * kMiB;

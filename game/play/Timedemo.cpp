@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "effects/gl/Gl.h"
+#include "game/bench/BenchSupport.h"
 #include "game/bench/TrivialFill.h"
 #include "game/capture/ImageFiles.h"
 #include "game/replay/ReplayCheck.h"
@@ -68,12 +69,6 @@ double nearest_rank(const std::vector<double>& sorted, double q) {
     if (sorted.empty()) return 0.0;
     const size_t rank = size_t(std::ceil(q * double(sorted.size())));
     return sorted[std::clamp<size_t>(rank, 1, sorted.size()) - 1];
-}
-
-std::string fmt(const char* format, auto... values) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, format, values...);
-    return buf;
 }
 
 }  // namespace

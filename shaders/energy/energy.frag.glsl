@@ -1,5 +1,5 @@
 #version 450 core
-// The energy wave (specs/energy.md): for each pixel, the field's integral H between
+// The energy wave (docs/effects/energy.md): for each pixel, the field's integral H between
 // the eye and the first opaque surface (scene depth, water included), then a smooth
 // saturation and a colour ramp, added to the HDR scene. The ray-marching baseline
 // samples the same field; the raw mode writes H itself to a float target.

@@ -1,4 +1,4 @@
-// The energy field of specs/energy.md and its line integrals along a view ray
+// The energy field of docs/effects/energy.md and its line integrals along a view ray
 // R(s) = S + s q (|q| = 1, s in metres from the eye). Every part of a segment (tail
 // sphere, beam, head sphere) is density c/max(r, core) - c/R inside its cut-off radius
 // R, so a part's integral over an interval is c * (closed form of 1/max(r, core) - length / R).

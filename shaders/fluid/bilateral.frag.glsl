@@ -1,18 +1,14 @@
 #version 450 core
-#include "fluid/common.glsl"
+#include "fluid/filter.glsl"
 // The seed's baseline (eq. 3.1): a bilateral filter over the window, spatial sigma
 // w / (2 sqrt 2) pixels, depth sigma 2 sqrt 2 r; pixels without liquid weigh nothing.
-uniform sampler2D u_depth;
-uniform int u_half;
 uniform float u_sigma_space;  // pixels
 uniform float u_sigma_depth;  // view units
-layout(location = 0) out float o_depth;
 
 void main() {
-    ivec2 pix = ivec2(gl_FragCoord.xy);
-    float z = texelFetch(u_depth, pix, 0).r;
-    o_depth = z;
-    if (!has_depth(z)) return;
+    ivec2 pix;
+    float z;
+    if (!start_filter(pix, z)) return;
     float ks = 0.5 / (u_sigma_space * u_sigma_space), kd = 0.5 / (u_sigma_depth * u_sigma_depth);
     float sum = 0.0, wsum = 0.0;
     for (int j = -u_half; j <= u_half; ++j)

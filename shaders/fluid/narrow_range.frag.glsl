@@ -1,20 +1,16 @@
 #version 450 core
-#include "fluid/common.glsl"
+#include "fluid/filter.glsl"
 // A narrow-range filter after Truong & Yuksel (2018): a Gaussian over the window that
 // only averages depths within a narrow band around the pixel's: samples far behind it
 // are ignored, samples far in front are clamped to the band's near edge, so edges
 // neither blur into the background nor bend towards the viewer.
-uniform sampler2D u_depth;
-uniform int u_half;
 uniform float u_sigma_space;  // pixels
 uniform float u_band;         // view units
-layout(location = 0) out float o_depth;
 
 void main() {
-    ivec2 pix = ivec2(gl_FragCoord.xy);
-    float z = texelFetch(u_depth, pix, 0).r;
-    o_depth = z;
-    if (!has_depth(z)) return;
+    ivec2 pix;
+    float z;
+    if (!start_filter(pix, z)) return;
     float ks = 0.5 / (u_sigma_space * u_sigma_space);
     float sum = 0.0, wsum = 0.0;
     for (int j = -u_half; j <= u_half; ++j)

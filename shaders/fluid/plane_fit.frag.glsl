@@ -1,15 +1,12 @@
 #version 450 core
-#include "fluid/common.glsl"
+#include "fluid/filter.glsl"
 // Local plane fitting (seed 4.3): the window's pixels back-projected to view space,
 // weighted by depth likeness; the plane minimising sum w (n.p + d)^2 with |n| = 1 has
 // n = the weighted covariance's eigenvector of the smallest eigenvalue. The pixel's
 // new depth is where its view ray meets that plane, unless that moved it too far (a
 // plane nearly along the ray).
-uniform sampler2D u_depth;
-uniform int u_half;          // kernel half width: (K - 1) / 2
 uniform float u_sigma;       // depth weight scale, view units
 uniform float u_max_move;    // larger moves keep the old depth
-layout(location = 0) out float o_depth;
 
 // Eigenvector of the smallest eigenvalue of a symmetric 3x3 (analytic eigenvalues,
 // vector from the rows of C - lambda I).
@@ -31,10 +28,9 @@ vec3 smallest_eigenvector(mat3 m) {
 }
 
 void main() {
-    ivec2 pix = ivec2(gl_FragCoord.xy);
-    float z = texelFetch(u_depth, pix, 0).r;
-    o_depth = z;
-    if (!has_depth(z)) return;
+    ivec2 pix;
+    float z;
+    if (!start_filter(pix, z)) return;
     vec3 ray = view_ray(gl_FragCoord.xy);
     vec3 centre_point = ray * z;
     // Moments about the pixel's own point, for precision.

@@ -6,8 +6,9 @@
 // Schlick-Fresnel share is reflected (the background along the mirrored ray) and the
 // rest refracted (Snell) and traced to the next surface with the secant method; the
 // path inside the liquid is absorbed (Beer-Lambert). What leaves the last surface sees
-// the scene behind (the colour copy), or the sky off screen. Then the tank's glass:
-// a faint reflection and its steel edges.
+// the scene behind (u_background: the fluid pass's own copy of the scene colour around
+// the tank, water included), or the sky off screen. Then the tank's glass: a faint
+// reflection and its steel edges.
 uniform sampler2D u_body_front, u_body_back, u_splash_front, u_splash_back;
 uniform sampler2D u_body_front_normal, u_body_back_normal, u_splash_front_normal, u_splash_back_normal;
 uniform sampler2D u_background;   // the scene's colour before the fluid
