@@ -86,20 +86,19 @@ struct TempDir {
     }
 };
 
-// The #define sets programs compile shaders with, one a preset: lighting.glsl's
-// (lighting_defines: the sea's and the sheets' shading), those plus the mesh's
-// GROUND_DETAIL (the objects) and then GROUND (the ground), as OpaquePass builds them.
+// The #define sets programs compile shaders with: each preset's (shader_defines), with
+// and without line lights, and those plus GROUND and a road count, as OpaquePass builds
+// the ground.
 std::vector<std::vector<std::string>> preset_define_sets() {
     std::vector<std::vector<std::string>> sets;
-    for (effects::Quality q : {effects::Quality::Low, effects::Quality::Medium, effects::Quality::High}) {
-        const effects::QualitySettings settings = effects::quality_settings(q);
-        std::vector<std::string> defines = effects::lighting_defines(settings);
-        sets.push_back(defines);
-        defines.push_back(std::string("GROUND_DETAIL ") + (settings.ground_detail ? "1" : "0"));
-        sets.push_back(defines);
-        defines.push_back("GROUND");
-        sets.push_back(defines);
-    }
+    for (effects::Quality q : {effects::Quality::Low, effects::Quality::Medium, effects::Quality::High})
+        for (bool line_lights : {false, true}) {
+            std::vector<std::string> defines = effects::shader_defines(effects::quality_settings(q), line_lights);
+            sets.push_back(defines);
+            defines.push_back("GROUND");
+            defines.push_back("ROAD_COUNT 2");
+            sets.push_back(defines);
+        }
     return sets;
 }
 
