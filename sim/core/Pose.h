@@ -1,9 +1,9 @@
 #pragma once
 // Rigid-body pose of a vehicle: model space has +x forward, +y up, +z to the right.
-#include <cmath>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+
+#include "sim/core/DetMath.h"
 
 namespace sim {
 
@@ -13,14 +13,23 @@ struct Pose {
     float pitch_rad = 0.0f;    // nose up positive
     float roll_rad = 0.0f;     // leaning right positive
 
-    glm::vec3 forward_flat() const { return {std::cos(heading_rad), 0.0f, -std::sin(heading_rad)}; }
-    glm::vec3 right_flat() const { return {std::sin(heading_rad), 0.0f, std::cos(heading_rad)}; }
+    glm::vec3 forward_flat() const {
+        float s, c;
+        det::sincos(heading_rad, s, c);
+        return {c, 0.0f, -s};
+    }
+    glm::vec3 right_flat() const {
+        float s, c;
+        det::sincos(heading_rad, s, c);
+        return {s, 0.0f, c};
+    }
 
     // Model-to-world: yaw, then pitch about the model's right axis, then roll.
     glm::mat4 matrix() const {
-        float ch = std::cos(heading_rad), sh = std::sin(heading_rad);
-        float cp = std::cos(pitch_rad), sp = std::sin(pitch_rad);
-        float cr = std::cos(roll_rad), sr = std::sin(roll_rad);
+        float ch, sh, cp, sp, cr, sr;
+        det::sincos(heading_rad, sh, ch);
+        det::sincos(pitch_rad, sp, cp);
+        det::sincos(roll_rad, sr, cr);
         glm::mat4 yaw(1.0f), pitch(1.0f), roll(1.0f);
         yaw[0] = {ch, 0, -sh, 0};
         yaw[2] = {sh, 0, ch, 0};

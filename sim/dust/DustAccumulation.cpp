@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/DetMath.h"
 #include "sim/dust/SourceDepthMap.h"
 
 namespace sim {
@@ -24,8 +25,8 @@ std::vector<glm::vec3> place_dust_sources(const DustPropRange& prop, const DustD
     const float elevation = desc.source_elevation_deg * kPi / 180.0f;
     for (int k = 0; k < around; ++k) {
         float azimuth = 2.0f * kPi * (float(k) + 0.5f) / float(around);
-        sources.push_back(centre + dist * glm::vec3(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
-                                                    std::cos(elevation) * std::sin(azimuth)));
+        sources.push_back(centre + dist * glm::vec3(det::cos(elevation) * det::cos(azimuth), det::sin(elevation),
+                                                    det::cos(elevation) * det::sin(azimuth)));
     }
     return sources;
 }

@@ -7,12 +7,25 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "sim/core/DetMath.h"
+
 namespace sim {
 
 namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 // Depth slack of the visibility test: a few texels' worth of the sampled surfaces.
 constexpr float kBias_m = 0.03f;
+// glm::perspective (right-handed, clip z in [-w, w]) with the sim's own tan: glm's calls libm.
+glm::mat4 perspective(float fovy_rad, float aspect, float near_m, float far_m) {
+    const float tan_half = det::tan(fovy_rad / 2.0f);
+    glm::mat4 m(0.0f);
+    m[0][0] = 1.0f / (aspect * tan_half);
+    m[1][1] = 1.0f / tan_half;
+    m[2][2] = -(far_m + near_m) / (far_m - near_m);
+    m[2][3] = -1.0f;
+    m[3][2] = -(2.0f * far_m * near_m) / (far_m - near_m);
+    return m;
+}
 }  // namespace
 
 SourceDepthMap::SourceDepthMap(glm::vec3 source, glm::vec3 centre, float radius, int size)
@@ -20,9 +33,9 @@ SourceDepthMap::SourceDepthMap(glm::vec3 source, glm::vec3 centre, float radius,
     glm::vec3 axis = centre - source;
     float dist = glm::length(axis);
     glm::vec3 up = std::fabs(axis.y) > 0.99f * dist ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-    float half_angle = std::asin(std::min(radius / std::max(dist, 1e-3f), 0.99f));
+    float half_angle = det::asin(std::min(radius / std::max(dist, 1e-3f), 0.99f));
     near_m_ = std::max(0.05f, dist - radius * 1.05f);
-    view_proj_ = glm::perspective(2.0f * half_angle * 1.05f, 1.0f, near_m_, dist + radius * 1.1f) *
+    view_proj_ = perspective(2.0f * half_angle * 1.05f, 1.0f, near_m_, dist + radius * 1.1f) *
                  glm::lookAt(source, centre, up);
 }
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "sim/core/DetMath.h"
+
 namespace sim {
 
 void symmetric_eigen(const float m[3][3], float values[3], glm::vec3 vectors[3]) {
@@ -123,7 +125,7 @@ void anisotropic_kernels(const std::vector<glm::vec3>& positions, const Anisotro
         symmetric_eigen(cov, sigma, axes);
         const float floor = std::max(sigma[0], 1e-12f) / p.max_stretch;
         for (float& s : sigma) s = std::max(s, floor);
-        const float norm = rp / std::cbrt(sigma[0] * sigma[1] * sigma[2]);
+        const float norm = rp / det::cbrt(sigma[0] * sigma[1] * sigma[2]);
         for (int k = 0; k < 3; ++k) e.axis[k] = axes[k] * (sigma[k] * norm);
     }
 }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Rng.h"
 
 namespace sim {
@@ -118,7 +119,7 @@ int GlassSurface::cell_of(glm::vec2 uv_m) const {
 
 void GlassSurface::flat_edges(float width_m, float height_m, float rake_rad, std::vector<glm::vec3>& lower,
                               std::vector<glm::vec3>& upper) {
-    const float run = height_m * std::cos(rake_rad), rise = height_m * std::sin(rake_rad);
+    const float run = height_m * det::cos(rake_rad), rise = height_m * det::sin(rake_rad);
     lower = {{0.0f, 0.0f, -0.5f * width_m}, {0.0f, 0.0f, 0.5f * width_m}};
     upper = {{-run, rise, -0.5f * width_m}, {-run, rise, 0.5f * width_m}};
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Car.h"
@@ -81,7 +82,7 @@ WiperBladeParams place(const WiperLayout& l, const GlassSurface& g) {
 
 }  // namespace
 
-float RainSim::radius_m(float mass_mg) { return 1e-3f * std::cbrt(3.0f * mass_mg / (2.0f * kPi)); }
+float RainSim::radius_m(float mass_mg) { return 1e-3f * det::cbrt(3.0f * mass_mg / (2.0f * kPi)); }
 
 RainSim::RainSim(const RainParams& params, std::vector<glm::vec3> glass_lower, std::vector<glm::vec3> glass_upper,
                  uint64_t seed)
@@ -92,7 +93,7 @@ RainSim::RainSim(const RainParams& params, std::vector<glm::vec3> glass_lower, s
       cell_drop_(size_t(glass_.cell_count()), -1),
       wet_tick_(size_t(glass_.cell_count()), 0u),
       particle_r_m_(radius_m(p_.particle_mass_mg)),
-      hold_ref_(kGravity * std::sin(0.25f * kPi)),
+      hold_ref_(kGravity * det::sin(0.25f * kPi)),
       slide_r_m_(radius_m(p_.slide_mass_mg)) {}
 
 RainForces RainSim::forces_for(float speed_mps, glm::vec2 accel_body_mps2, glm::vec3 gravity_model) const {
@@ -244,7 +245,7 @@ void RainSim::move_drops(const RainForces& forces, float dt) {
 bool RainSim::step_cell(size_t i) {
     RainDrop d = drops_[i];
     // The three cells ahead of the velocity, weighted by affinity and straightness.
-    const float angle = std::atan2(d.vel_mps.y, d.vel_mps.x);
+    const float angle = det::atan2(d.vel_mps.y, d.vel_mps.x);
     const int ahead = (int(std::floor(angle / (0.25f * kPi) + 0.5f)) % 8 + 8) % 8;
     const glm::ivec2 at = glass_.cell_xy(d.cell);
     int choice[3];

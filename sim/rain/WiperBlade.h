@@ -7,6 +7,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "sim/core/DetMath.h"
+
 namespace sim {
 
 struct WiperBladeParams {
@@ -45,7 +47,11 @@ public:
     float turning() const { return angle_rad_ > previous_rad_ ? 1.0f : angle_rad_ < previous_rad_ ? -1.0f : 0.0f; }
 
 private:
-    static glm::vec2 unit(float rad) { return {std::cos(rad), std::sin(rad)}; }
+    static glm::vec2 unit(float rad) {
+        float s, c;
+        det::sincos(rad, s, c);
+        return {c, s};
+    }
 
     WiperBladeParams p_;
     float angle_rad_, previous_rad_;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "sim/core/DetMath.h"
+
 namespace sim {
 
 void WiperMotor::step(WiperMode mode, float dt) {
@@ -20,6 +22,6 @@ void WiperMotor::step(WiperMode mode, float dt) {
     }
 }
 
-float WiperMotor::fraction() const { return 0.5f - 0.5f * std::cos(6.28318531f * phase_); }
+float WiperMotor::fraction() const { return 0.5f - 0.5f * det::cos(6.28318531f * phase_); }
 
 }  // namespace sim

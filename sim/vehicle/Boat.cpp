@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/World.h"
@@ -54,7 +55,7 @@ void Boat::substep(const DriveInput& in, const World& world, float h) {
 
     // Out of the plane: linearised buoyancy around the waterline at each hull point.
     const float k_point = kWaterDensity * kGravity * p_.waterplane_area_m2 / kHullPoints;
-    float sp = std::sin(pose_.pitch_rad), sr = std::sin(pose_.roll_rad);
+    float sp = det::sin(pose_.pitch_rad), sr = det::sin(pose_.roll_rad);
     glm::vec3 fwd = pose_.forward_flat(), rt = pose_.right_flat();
     float lift = 0.0f, pitch_torque = 0.0f, roll_torque = 0.0f;
     for (int i = 0; i < kHullPoints; ++i) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/World.h"
@@ -79,13 +80,13 @@ void Car::substep(const DriveInput& in, bool reverse, const Terrain& terrain, fl
     // still opposed and the steered wheels turn the car the other way.
     float speed = std::max(std::fabs(u_), 1.0f);
     float travel = u_ < 0.0f ? -1.0f : 1.0f;
-    float alpha_f = std::atan((v_ + a * r_) / speed) - travel * steer_;
-    float alpha_r = std::atan((v_ - b * r_) / speed);
+    float alpha_f = det::atan((v_ + a * r_) / speed) - travel * steer_;
+    float alpha_r = det::atan((v_ - b * r_) / speed);
     float cap_f = mu * fz_front, cap_r = mu * fz_rear;
-    float fy_f = -cap_f * std::tanh(p_.cornering_stiffness_npr * alpha_f / cap_f);
-    float fy_r = -cap_r * std::tanh(p_.cornering_stiffness_npr * alpha_r / cap_r);
+    float fy_f = -cap_f * det::tanh(p_.cornering_stiffness_npr * alpha_f / cap_f);
+    float fy_r = -cap_r * det::tanh(p_.cornering_stiffness_npr * alpha_r / cap_r);
 
-    float cs = std::cos(steer_), sn = std::sin(steer_);
+    float cs = det::cos(steer_), sn = det::sin(steer_);
     float du = (fx - fy_f * sn) / p_.mass_kg + v_ * r_;
     float dv = (fy_f * cs + fy_r) / p_.mass_kg - u_ * r_;
     float dr = (a * fy_f * cs - b * fy_r) / p_.yaw_inertia_kgm2;
@@ -99,7 +100,7 @@ void Car::substep(const DriveInput& in, bool reverse, const Terrain& terrain, fl
     // Below walking pace tyre slip is meaningless: blend into rolling without slip,
     // where the rear axle has no sideways speed (v = b r) and r = u tan(steer) / L.
     float k = std::clamp((std::fabs(u_) - 1.0f) / 2.0f, 0.0f, 1.0f);
-    float r_kinematic = u_ * std::tan(steer_) / wheelbase;
+    float r_kinematic = u_ * det::tan(steer_) / wheelbase;
     float v_kinematic = b * r_kinematic;
     r_ = r_kinematic + (r_ - r_kinematic) * k;
     v_ = v_kinematic + (v_ - v_kinematic) * k;
@@ -162,8 +163,8 @@ void Car::follow_ground(const Terrain& terrain) {
     float front = at(f * p_.cg_to_front_m), rear = at(-f * p_.cg_to_rear_m);
     float left = at(-rt * (kTrack_m * 0.5f)), right = at(rt * (kTrack_m * 0.5f));
     pose_.position.y = 0.5f * (0.5f * (front + rear) + 0.5f * (left + right));
-    pose_.pitch_rad = std::atan2(front - rear, p_.cg_to_front_m + p_.cg_to_rear_m);
-    pose_.roll_rad = std::atan2(left - right, kTrack_m);
+    pose_.pitch_rad = det::atan2(front - rear, p_.cg_to_front_m + p_.cg_to_rear_m);
+    pose_.roll_rad = det::atan2(left - right, kTrack_m);
 }
 
 uint64_t Car::hash() const {

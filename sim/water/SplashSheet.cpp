@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 
 namespace sim {
@@ -120,7 +121,7 @@ int SplashSheet::first_splash(float object_radius_m, float momentum_kgmps, Rng& 
             // The rim ring flies at the seed's speed; the skirt outside it slower, so
             // at any moment it lies below and inside the rim: the crown's wall.
             const float skirt = float(ring - band.inner) / float(band.outer - band.inner + 1);
-            const float a = alpha_at(std::atan2(float(dj), float(di))) * s * (1.0f - skirt);
+            const float a = alpha_at(det::atan2(float(dj), float(di))) * s * (1.0f - skirt);
             // Seed: alpha*s along an axis, alpha*s/2 per axis on the diagonals; in
             // between, the same rule blended (the L1-normalised offset).
             const float l1 = float(std::abs(di) + std::abs(dj));

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 
 namespace sim {
@@ -59,10 +60,10 @@ int SprayParticles::emit_splash(glm::vec3 centre, float ring_radius_m, glm::vec3
         if (ahead) {  // the front half: ahead turned by up to +-90 degrees
             float phi = (u - 0.5f) * kPi;
             glm::vec2 side(-ahead->y, ahead->x);
-            dir = *ahead * std::cos(phi) + side * std::sin(phi);
+            dir = *ahead * det::cos(phi) + side * det::sin(phi);
         } else {
             float phi = 2.0f * kPi * u;
-            dir = {std::cos(phi), std::sin(phi)};
+            dir = {det::cos(phi), det::sin(phi)};
         }
         const float a0 = rng.unit(), a1 = rng.unit(), a2 = rng.unit();
         const float out = s * (0.2f + 0.8f * a0);

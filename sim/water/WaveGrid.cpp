@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 #include "sim/water/WaveRow.h"
 
@@ -51,7 +52,7 @@ WaveGrid::WaveGrid(const WaveGridParams& p, float dt_s) {
     // travel. The water the pushes take away still has to come back: the least pull
     // that returns the mean level without overshoot, (1 - sqrt(keep))^2, whose ~0.14
     // rad/s is far below any wave's frequency.
-    damp_ = float(std::pow(1.0 - double(p.damping_per_s), double(dt_s)));
+    damp_ = float(det::pow(1.0 - double(p.damping_per_s), double(dt_s)));
     pull_ = (1.0f - std::sqrt(damp_)) * (1.0f - std::sqrt(damp_));
     const size_t n = size_t(size_) * size_t(size_);
     cur_.assign(n, 0.0f);
@@ -161,7 +162,7 @@ void WaveGrid::push(glm::vec2 xz, float radius_m, float depth_m) {
             float ddx = float(i) - fx, ddz = float(j) - fz;
             float d = std::sqrt(ddx * ddx + ddz * ddz) / fr;
             if (d >= 1.0f) continue;
-            float w = 0.5f * (1.0f + std::cos(kPi * d));
+            float w = 0.5f * (1.0f + det::cos(kPi * d));
             cur_[idx] = flushed(cur_[idx] - depth_m * w);
             prev_[idx] = flushed(prev_[idx] - depth_m * w);
         }

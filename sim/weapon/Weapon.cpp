@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
@@ -63,7 +64,7 @@ void Weapon::shape(Shot& s, float dt) const {
     for (int i = 0; i < Shot::kSegments; ++i) {
         float f = float(i + 1) / Shot::kSegments;
         glm::vec3 along = tail + (head - tail) * f;
-        float w = p_.sway_m * reach * std::sin(s.phase + 7.0f * t + 2.1f * float(i)) *
+        float w = p_.sway_m * reach * det::sin(s.phase + 7.0f * t + 2.1f * float(i)) *
                   (i + 1 < Shot::kSegments ? 1.0f : 0.0f);
         glm::vec3 end = along + side * w + up * (0.5f * w);
         EnergySegment& seg = s.segments[size_t(i)];
@@ -111,7 +112,7 @@ void Weapon::step(StepContext& ctx) {
     if (player.fires()) {
         const Pose& pose = player.vehicle() == Vehicle::Car ? ctx.world.get<Car>().pose() : ctx.world.get<Boat>().pose();
         const glm::vec3 fwd = pose.forward_flat();
-        const glm::vec3 aim = fwd * std::cos(p_.dip_rad) - glm::vec3(0.0f, std::sin(p_.dip_rad), 0.0f);
+        const glm::vec3 aim = fwd * det::cos(p_.dip_rad) - glm::vec3(0.0f, det::sin(p_.dip_rad), 0.0f);
         fire(pose.position + glm::vec3(0.0f, p_.muzzle_height_m, 0.0f) + fwd * p_.muzzle_ahead_m, aim);
     }
     // In shot order: the water sees the impacts in the same order every run.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/DetMath.h"
+
 namespace sim {
 
 namespace {
@@ -16,7 +18,7 @@ float Terrain::ground_height(glm::vec2 xz) const {
     float hills = 0.0f;
     for (const Hill& h : level_.hills) {
         glm::vec2 d = xz - h.centre_xz;
-        hills += h.height_m * std::exp(-(d.x * d.x + d.y * d.y) / (2.0f * h.radius_m * h.radius_m));
+        hills += h.height_m * det::exp(-(d.x * d.x + d.y * d.y) / (2.0f * h.radius_m * h.radius_m));
     }
     float land = level_.land_height_m + hills;
     float s = (xz.y - level_.shore_z_m) / kQuayWidth_m;  // 0 at the quay, 1 a quay width out
