@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "sim/core/FloatEnvironment.h"
+
 namespace sim {
 
 namespace {
@@ -17,6 +19,7 @@ JobPool::JobPool(int threads) {
     if (threads < 1 || threads > 64)
         throw std::invalid_argument("sim thread count must be between 1 and 64, got " +
                                     std::to_string(threads));
+    require_float_environment();  // the workers inherit this thread's
     for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { worker_loop(i); });
 }
 

@@ -1,5 +1,6 @@
 #include "sim/world/World.h"
 
+#include "sim/core/FloatEnvironment.h"
 #include "sim/core/Hash.h"
 
 namespace sim {
@@ -21,6 +22,7 @@ World::World(LevelDesc level, WorldOptions options)
 void World::add(std::unique_ptr<Subsystem> subsystem) { subsystems_.push_back(std::move(subsystem)); }
 
 void World::step(TickInput input, StepObserver* observer) {
+    require_float_environment();  // a few cycles a tick, against a silent desync
     input = quantise(input);
     events_.clear();
     StepContext ctx{input, previous_, *this, jobs_, kTickSeconds, tick_};
