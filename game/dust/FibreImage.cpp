@@ -58,6 +58,10 @@ effects::FibreDirections fibre_directions(const FibreImage& image, const std::st
     }
 }
 
+effects::FibreDirections read_fibre_directions(const std::filesystem::path& file, int slices) {
+    return fibre_directions(read_fibre_image(file, slices), file.string());
+}
+
 ImageRGBA8 draw_fibre_image(int width, int slices, int fibres, uint64_t seed) {
     ImageRGBA8 img;
     img.width = width;

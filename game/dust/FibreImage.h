@@ -32,6 +32,8 @@ FibreImage binarised_fibres(const ImageRGBA8& image, int slices, const std::stri
 FibreImage read_fibre_image(const std::filesystem::path& file, int slices);
 // The direction table; throws FibreImageError when no two fibre pixels touch.
 effects::FibreDirections fibre_directions(const FibreImage& image, const std::string& what);
+// read_fibre_image, then fibre_directions: the level loader's fibre reader.
+effects::FibreDirections read_fibre_directions(const std::filesystem::path& file, int slices);
 
 // Draws the kind of image the harbour ships (levels/harbour/dust_fibres.png): fibres as
 // smooth random curves, one pixel wide, crossing between slices now and then. From

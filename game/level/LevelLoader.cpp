@@ -18,6 +18,7 @@
 #include "game/dust/FibreImage.h"
 #include "game/level/GltfModel.h"
 #include "game/level/LevelMemory.h"
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 #include "sim/fluid/FluidTank.h"
 
@@ -31,6 +32,17 @@ namespace {
 constexpr size_t kMaxHills = 256;
 constexpr size_t kMaxRoads = 1024;
 constexpr float kMaxAbsCoordinate_m = 1000.0f;
+
+// A turn about +y by the sim's own sine and cosine (glm::rotate calls libm's): props'
+// transforms make the sim's solids and decks, which must be the same on every machine.
+glm::mat4 rotate_y(float angle_rad) {
+    float s, c;
+    sim::det::sincos(angle_rad, s, c);
+    glm::mat4 m(1.0f);
+    m[0] = {c, 0.0f, -s, 0.0f};
+    m[2] = {s, 0.0f, c, 0.0f};
+    return m;
+}
 
 bool looks_like_path(std::string_view s) {
     return s.find('/') != std::string_view::npos || (s.size() >= 5 && s.substr(s.size() - 5) == ".json");
@@ -473,17 +485,17 @@ fs::path resolve_level_path(std::string_view name_or_path) {
     return data_dir() / "levels" / (std::string(name_or_path) + ".json");
 }
 
-LoadedLevel load_level(std::string_view name_or_path) {
+LoadedLevel load_level(std::string_view name_or_path, FibreImageReader fibre_reader) {
     const fs::path path = resolve_level_path(name_or_path);
     std::error_code ec;
     if (!fs::exists(path, ec)) {
         if (looks_like_path(name_or_path)) throw LevelError(path.string() + ": level file not found");
         throw LevelError("no level named '" + std::string(name_or_path) + "' (looked for " + path.string() + ")");
     }
-    return load_level_text(path, read_level_file(path, kMaxLevelJsonBytes));
+    return load_level_text(path, read_level_file(path, kMaxLevelJsonBytes), fibre_reader);
 }
 
-LoadedLevel load_level_text(const fs::path& path, const std::string& text) {
+LoadedLevel load_level_text(const fs::path& path, const std::string& text, FibreImageReader fibre_reader) {
     LoadedLevel out;
     out.path = path;
     if (text.size() > kMaxLevelJsonBytes)
@@ -548,8 +560,7 @@ LoadedLevel load_level_text(const fs::path& path, const std::string& text) {
         if (i == 1) out.scene.boat_model = model;
         if (i < 2) continue;  // vehicles are drawn at their sim pose
 
-        glm::mat4 transform = glm::translate(glm::mat4(1.0f), p.position) *
-                              glm::rotate(glm::mat4(1.0f), p.heading_rad, glm::vec3(0.0f, 1.0f, 0.0f)) *
+        glm::mat4 transform = glm::translate(glm::mat4(1.0f), p.position) * rotate_y(p.heading_rad) *
                               glm::scale(glm::mat4(1.0f), glm::vec3(p.scale));
         out.scene.props.push_back({model, transform});
 
@@ -581,7 +592,7 @@ LoadedLevel load_level_text(const fs::path& path, const std::string& text) {
         out.sim.dust.enabled = true;
         fs::path image = asset_dir / dust.fibre_image;
         try {
-            out.scene.fibre_directions = fibre_directions(read_fibre_image(image, dust.fibre_slices), image.string());
+            if (fibre_reader) out.scene.fibre_directions = fibre_reader(image, dust.fibre_slices);
         } catch (const FibreImageError& e) {
             r.fail("dust.fibre_image", e.what());
         }

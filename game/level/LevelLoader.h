@@ -76,6 +76,7 @@
 #include <string_view>
 
 #include "effects/scene/SceneDesc.h"
+#include "game/dust/FibreImage.h"
 #include "game/level/LevelError.h"
 #include "game/level/MemoryBudget.h"
 #include "sim/world/LevelDesc.h"
@@ -102,10 +103,26 @@ struct LoadedLevel {
 // or ends in .json). Does not check that the file exists.
 std::filesystem::path resolve_level_path(std::string_view name_or_path);
 
-// Throws LevelError with one message naming the file and what is wrong.
-LoadedLevel load_level(std::string_view name_or_path);
+// Reads the dust's fibre image into the renderer's growth statistics; throws
+// FibreImageError. The sim never reads them.
+using FibreImageReader = effects::FibreDirections (*)(const std::filesystem::path& image, int slices);
+
+// Throws LevelError with one message naming the file and what is wrong. Without a
+// fibre reader (the GL-free replay checker, which has no image library) the fibre
+// image is not read and scene.fibre_directions stays empty; the sim and the content
+// hash are the same.
+LoadedLevel load_level(std::string_view name_or_path, FibreImageReader fibre_reader);
 // The same for a level JSON already in memory, as if read from `path` (its assets are
 // read from beside it).
-LoadedLevel load_level_text(const std::filesystem::path& path, const std::string& text);
+LoadedLevel load_level_text(const std::filesystem::path& path, const std::string& text, FibreImageReader fibre_reader);
+
+// With the fibre image, as everything that renders needs (read_fibre_directions is in
+// the game library, with the image files).
+inline LoadedLevel load_level(std::string_view name_or_path) {
+    return load_level(name_or_path, &read_fibre_directions);
+}
+inline LoadedLevel load_level_text(const std::filesystem::path& path, const std::string& text) {
+    return load_level_text(path, text, &read_fibre_directions);
+}
 
 }  // namespace game

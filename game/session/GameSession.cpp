@@ -4,10 +4,6 @@
 
 namespace game {
 
-GameSession GameSession::open(std::string_view level_name_or_path, int threads, std::optional<uint64_t> seed) {
-    return start(load_level(level_name_or_path), threads, seed);
-}
-
 GameSession GameSession::start(LoadedLevel level, int threads, std::optional<uint64_t> seed) {
     GameSession s;
     s.level = std::move(level);
