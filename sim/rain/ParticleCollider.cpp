@@ -1,16 +1,21 @@
 #include "sim/rain/ParticleCollider.h"
 
-#include <emmintrin.h>
-
+#include <cmath>
 #include <cstddef>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace sim {
 
+#if defined(__SSE2__)
 namespace {
 
 __m128 select(__m128 mask, __m128 yes, __m128 no) { return _mm_or_ps(_mm_and_ps(mask, yes), _mm_andnot_ps(mask, no)); }
 
 }  // namespace
+#endif
 
 void ParticleCollider::collide(std::vector<WaterParticle>& particles, float radius_m, float restitution) {
     const float two_r = 2.0f * radius_m, two_r2 = two_r * two_r;
@@ -24,8 +29,10 @@ void ParticleCollider::collide(std::vector<WaterParticle>& particles, float radi
     for (std::vector<int32_t>* v : {&near_slot_, &near_index_})
         if (v->size() < most) v->resize(most);
 
+#if defined(__SSE2__)
     const __m128 reach2 = _mm_set1_ps(two_r2), reach = _mm_set1_ps(two_r), bounce4 = _mm_set1_ps(bounce);
     const __m128 half = _mm_set1_ps(0.5f), apart = _mm_set1_ps(1e-7f), plus = _mm_set1_ps(1.0f), minus = _mm_set1_ps(-1.0f);
+#endif
     for (int32_t k = 0; k < buckets_.buckets(); ++k) {
         const int32_t first = buckets_.begin(k), last = buckets_.end(k);
         if (first == last) continue;
@@ -50,6 +57,7 @@ void ParticleCollider::collide(std::vector<WaterParticle>& particles, float radi
         for (int32_t a = first; a < last; ++a) {
             const size_t from = size_t(a - first) + 1;
             const glm::vec2 pa = buckets_.position(a);
+#if defined(__SSE2__)
             const __m128 au = _mm_set1_ps(pa.x), av = _mm_set1_ps(pa.y);
             const __m128i ai = _mm_set1_epi32(buckets_.particle(a));
             for (size_t c = from; c < count; c += 4) {
@@ -68,6 +76,23 @@ void ParticleCollider::collide(std::vector<WaterParticle>& particles, float radi
                 _mm_storeu_ps(&push_u_[c], _mm_and_ps(touching, _mm_mul_ps(dir_u, size)));
                 _mm_storeu_ps(&push_v_[c], _mm_and_ps(touching, _mm_mul_ps(dir_v, size)));
             }
+#else
+            // Without SSE (aarch64): the same IEEE operations one lane at a time, and the
+            // same +0 where a mask would clear the lane.
+            const int32_t ai = buckets_.particle(a);
+            for (size_t c = from; c < count; ++c) {
+                const float du = pa.x - near_u_[c], dv = pa.y - near_v_[c];
+                const float d2 = du * du + dv * dv;
+                const bool touching = !(d2 >= two_r2);
+                const float dist = std::sqrt(d2);
+                const bool distinct = dist > 1e-7f;
+                const float dir_u = distinct ? du / dist : (ai < near_index_[c] ? 1.0f : -1.0f);
+                const float dir_v = distinct ? dv / dist : 0.0f;
+                const float size = (0.5f * (two_r - dist)) * bounce;
+                push_u_[c] = touching ? dir_u * size : 0.0f;
+                push_v_[c] = touching ? dir_v * size : 0.0f;
+            }
+#endif
             // Slot a's own push is summed in a register: its partners are other slots.
             glm::vec2 push_a = push_[size_t(a)];
             for (size_t c = from; c < count; ++c) {

@@ -18,22 +18,31 @@ void row_baseline(const float* up, const float* r, const float* dn, float* o, si
     row_loop(up, r, dn, o, n, w);
 }
 
+#if defined(__x86_64__) || defined(__i386__)
 [[gnu::target("avx2")]] void row_avx2(const float* up, const float* r, const float* dn, float* o, size_t n,
                                      WaveRowWeights w) {
     row_loop(up, r, dn, o, n, w);
 }
+#endif
 
 }  // namespace
 
 bool wave_row_has_avx2() {
+#if defined(__x86_64__) || defined(__i386__)
     static const bool has = __builtin_cpu_supports("avx2");
     return has;
+#else
+    return false;  // another CPU: the baseline code only
+#endif
 }
 
 void step_wave_row(const float* up, const float* row, const float* down, float* out, size_t n, WaveRowWeights w,
                    WaveRowCode code) {
-    if (code == WaveRowCode::kAvx2) row_avx2(up, row, down, out, n, w);
-    else row_baseline(up, row, down, out, n, w);
+#if defined(__x86_64__) || defined(__i386__)
+    if (code == WaveRowCode::kAvx2) return row_avx2(up, row, down, out, n, w);
+#endif
+    (void)code;
+    row_baseline(up, row, down, out, n, w);
 }
 
 }  // namespace sim
