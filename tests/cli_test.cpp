@@ -20,6 +20,8 @@
 
 #include "game/capture/ImageFiles.h"
 #include "game/play/ResolutionController.h"
+#include "game/replay/ReplayReader.h"
+#include "game/replay/ReplayWriter.h"
 
 namespace fs = std::filesystem;
 
@@ -33,6 +35,20 @@ struct CommandResult {
 // `env_prefix`, e.g. "env -u DISPLAY", runs the program without a display.
 CommandResult run(const std::string& args, const std::string& env_prefix = "") {
     std::string cmd = env_prefix + std::string(SPINDRIFT_BIN) + " " + args + " 2>&1";
+    CommandResult r;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
+    int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return r;
+}
+
+// The GL-free checker, spindrift-check, the same way.
+CommandResult run_check(const std::string& args) {
+    std::string cmd = std::string(SPINDRIFT_CHECK_BIN) + " " + args + " 2>&1";
     CommandResult r;
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
@@ -116,6 +132,50 @@ TEST_F(Cli, RecordedReplayChecksWithAnyThreadCount) {
     EXPECT_NE(a.output.find("check passed"), std::string::npos) << a.output;
     CommandResult b = run("replay " + rep.string() + " --headless --check --frames none --threads 2");
     EXPECT_EQ(b.code, 0) << b.output;
+}
+
+TEST_F(Cli, TheGlFreeCheckerPassesARecordingAndNamesTheFirstTickOfADesync) {
+    const fs::path rep = record(kShortScript);
+    for (const char* threads : {"1", "2"}) {
+        CommandResult r = run_check(rep.string() + " --threads " + threads);
+        EXPECT_EQ(r.code, 0) << r.output;
+        EXPECT_NE(r.output.find("200 ticks, 200 hash checks, check passed"), std::string::npos) << r.output;
+    }
+    // The same recording with steering held at tick 100 (index 99), its hashes kept: a
+    // genuine desync there. The writer recomputes the CRCs; the fingerprint bytes of the
+    // ticks between chunk ends are what append() keeps of the parts.
+    const game::Replay replay = game::read_replay(rep);
+    const size_t parts = replay.header.subsystem_names.size();
+    const fs::path bad = dir_ / "steered.replay";
+    game::ReplayWriter w = game::ReplayWriter::create(bad, replay.header);
+    size_t chunk = 0;
+    for (size_t i = 0; i < replay.inputs.size(); ++i) {
+        const uint32_t tick = uint32_t(i + 1);
+        while (chunk < replay.hashes.size() && replay.hashes[chunk].tick < tick) ++chunk;
+        sim::WorldHash h;
+        if (chunk < replay.hashes.size() && replay.hashes[chunk].tick == tick) {
+            h = replay.hashes[chunk].hash;
+        } else {
+            h.world = replay.tick_world_hashes[i];
+            for (size_t k = 0; k < parts; ++k) h.parts.push_back(replay.tick_fingerprints[i * parts + k]);
+        }
+        sim::TickInput input = replay.inputs[i];
+        if (i == 99) input.set(sim::Control::SteerLeft, true);
+        w.append(input, h);
+    }
+    w.finish();
+    CommandResult r = run_check(bad.string());
+    EXPECT_EQ(r.code, 1) << r.output;
+    EXPECT_NE(r.output.find("DESYNC at tick 100: world hash"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("differs first"), std::string::npos) << r.output;
+    // Another file that is no replay: reported, the others still checked, exit code 3.
+    write_file(dir_ / "junk.replay", "JUNK");
+    CommandResult mixed = run_check((dir_ / "junk.replay").string() + " " + rep.string());
+    EXPECT_EQ(mixed.code, 3) << mixed.output;
+    EXPECT_NE(mixed.output.find("check passed"), std::string::npos) << mixed.output;
+    EXPECT_NE(mixed.output.find("1 could not be checked"), std::string::npos) << mixed.output;
+    EXPECT_EQ(run_check("").code, 2);
+    EXPECT_EQ(run_check(rep.string() + " --threads 0").code, 2);
 }
 
 TEST_F(Cli, BadScriptsAreRefusedBeforeAnyFileIsWritten) {
