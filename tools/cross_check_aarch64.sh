@@ -5,11 +5,13 @@
 #   tools/cross_check_aarch64.sh [REPLAY ...]   (default: every replays/*.replay)
 # Installs g++-aarch64-linux-gnu and qemu-user when missing (as root or with sudo).
 # SPINDRIFT_CROSS_BUILD: the build folder (default build-aarch64); SPINDRIFT_CROSS_TESTS=0
-# skips building and running the sim's unit tests (GoogleTest built from source).
+# skips building and running the sim's unit tests (GoogleTest built from source);
+# SPINDRIFT_CROSS_JOBS: parallel compile jobs (default: the number of cores).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${SPINDRIFT_CROSS_BUILD:-build-aarch64}
 with_tests=${SPINDRIFT_CROSS_TESTS:-1}
+jobs=${SPINDRIFT_CROSS_JOBS:-$(nproc)}
 
 packages=(g++-aarch64-linux-gnu qemu-user)
 missing=()
@@ -30,13 +32,13 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE="$PWD/t
       -DSPINDRIFT_RENDER=OFF -DSPINDRIFT_TESTS=$tests -DSPINDRIFT_GTEST_SOURCE=/usr/src/googletest >/dev/null
 targets=(spindrift-check)
 [ "$tests" = ON ] && targets+=(spindrift_sim_tests spindrift_libm_caller)
-cmake --build "$build" -j"$(nproc)" --target "${targets[@]}"
+cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 readelf -h "$build/game/spindrift-check" | grep -q 'Machine: *AArch64' ||
   { echo "cross: $build/game/spindrift-check is not an aarch64 program" >&2; exit 1; }
 
 if [ "$tests" = ON ]; then
   # The sim's tests (DetMath against this CPU's libm, the FPCR check) and the libm-symbol check.
-  ctest --test-dir "$build" --output-on-failure -j"$(nproc)" -LE replay
+  ctest --test-dir "$build" --output-on-failure -j"$jobs" -LE replay
 fi
 replays=("$@")
 [ ${#replays[@]} -gt 0 ] || replays=(replays/*.replay)
