@@ -1,5 +1,5 @@
 #pragma once
-// What the level says about dust (specs/dust.md): which props are dusty and with what
+// What the level says about dust (docs/effects/dust.md): which props are dusty and with what
 // deposit, where the dust sources stand, how finely amounts are kept. The loader fills
 // it from the level's "dust" section and the props flagged "dust"; the prop geometry
 // arrives here as world-space triangles, since the sim loads no files.

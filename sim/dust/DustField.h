@@ -1,5 +1,5 @@
 #pragma once
-// The dust on the warehouse props (seed 004; specs/dust.md): the sources around each
+// The dust on the warehouse props (seed 004; docs/effects/dust.md): the sources around each
 // dusty prop and the amount at every vertex of the props' tessellated surfaces. The
 // amounts are computed when the world is built and then only lowered: a thrown object
 // or an energy shot passing close blows the dust off where it went. Stepped after the

@@ -1,5 +1,5 @@
 #pragma once
-// The glass tank of liquid (specs/fluid.md): a particle fluid in the tank's frame,
+// The glass tank of liquid (docs/effects/fluid.md): a particle fluid in the tank's frame,
 // standing on the pier at the level's tank spot or riding the boat's deck. Thrown
 // objects falling into it push the liquid aside; the boat's accelerations slosh it.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The windshield as the rain sees it (specs/rain.md, "Glass"): a surface ruled between
+// The windshield as the rain sees it (docs/effects/rain.md, "What is implemented"): a surface ruled between
 // the glass's lower and upper edge, with its own 2D coordinates in metres, u across
 // from the car's left to its right, v up the glass from the lower edge. It is split
 // into square cells, each with a tangent frame in car model space (gravity and air

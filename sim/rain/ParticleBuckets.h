@@ -1,6 +1,6 @@
 #pragma once
 // The wiper particles sorted into square buckets one contact distance wide over their
-// bounding box, for the pairwise collisions (specs/rain.md, "Wipers"): two particles
+// bounding box, for the pairwise collisions (docs/effects/rain.md, "What is implemented"): two particles
 // closer than a bucket width lie in the same or in neighbouring buckets. The
 // particles' positions are copied out in bucket order (slots), so a pair search reads
 // memory in sequence; a counting sort keeps each bucket's particles in index order.

@@ -1,5 +1,5 @@
 #pragma once
-// One pass of the wiper particles' pairwise collisions (specs/rain.md, "Wipers"):
+// One pass of the wiper particles' pairwise collisions (docs/effects/rain.md, "What is implemented"):
 // centres closer than two radii are pushed apart along the line between them by half
 // the overlap each, plus the restitution times that. Jacobi style: every push is
 // taken from the positions before the pass, then all are applied.

@@ -1,5 +1,5 @@
 #pragma once
-// The tunables of the windshield rain (specs/rain.md). Masses in milligrams (a
+// The tunables of the windshield rain (docs/effects/rain.md). Masses in milligrams (a
 // milligram of water is a cubic millimetre), lengths in metres. Drops are a little
 // heavier than most real ones (a few mm across) so that they read from the driver's
 // seat at game resolutions.

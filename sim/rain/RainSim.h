@@ -1,6 +1,6 @@
 #pragma once
 // Raindrops on the car's windshield and the wipers that clear them (seed 001, Goto,
-// Tanaka, Sagawa; specs/rain.md). Far from the blades drops follow the grid model:
+// Tanaka, Sagawa; docs/effects/rain.md). Far from the blades drops follow the grid model:
 // one drop per cell, moved cell by cell to one of the three cells ahead, chosen by
 // affinity, merging, leaving trailing drops. Drops a blade touches become uniform
 // particles that the blade pushes and that push each other; out of the band around

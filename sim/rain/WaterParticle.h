@@ -1,5 +1,5 @@
 #pragma once
-// A uniform particle of water in the wipers' particle model (specs/rain.md, "Wipers").
+// A uniform particle of water in the wipers' particle model (docs/effects/rain.md, "What is implemented").
 #include <cstdint>
 
 #include <glm/vec2.hpp>

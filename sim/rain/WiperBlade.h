@@ -1,5 +1,5 @@
 #pragma once
-// A wiper blade in the glass's coordinates (specs/rain.md, "Wipers"): a segment on an
+// A wiper blade in the glass's coordinates (docs/effects/rain.md, "What is implemented"): a segment on an
 // arm rotating about a pivot, between radii inner_m and outer_m, swept from its rest
 // angle by a fraction 0..1 of its sweep. The blades of a car share one motor
 // (WiperMotor), so all of them are at the same fraction.

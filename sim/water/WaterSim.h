@@ -1,5 +1,5 @@
 #pragma once
-// The harbour water of seed 003 (Sasano 2004; specs/water.md): a wave-equation grid
+// The harbour water of seed 003 (Sasano 2004; docs/effects/water.md): a wave-equation grid
 // over the harbour, splash sheets that rise from it where things hit the water, spray
 // particles, and the coupling to the boat, thrown objects and rain. It is also the
 // sea surface that floating bodies ride (World::set_sea).

@@ -1,5 +1,5 @@
 #pragma once
-// The harbour's wave-height grid (seed 003, chapter 3; specs/water.md): an explicit
+// The harbour's wave-height grid (seed 003, chapter 3; docs/effects/water.md): an explicit
 // central-difference step of the 2D wave equation with the seed's free boundary (a
 // missing neighbour is left out and the centre weight becomes 2 - k c), plus damping
 // of the surface's velocity.

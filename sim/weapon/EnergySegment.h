@@ -1,5 +1,5 @@
 #pragma once
-// One segment of an energy wave's field (specs/energy.md): start M, unit direction D,
+// One segment of an energy wave's field (docs/effects/energy.md): start M, unit direction D,
 // length L, sphere strength a and beam strength b. Behind the plane through M normal
 // to D the density is the sphere part a/|P-M|, in the slab 0 <= (P-M).D <= L the beam
 // part b/dist(P, axis), beyond it the head sphere a/|P-(M+L D)|. Each part is cut off

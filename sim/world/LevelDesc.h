@@ -37,7 +37,7 @@ struct Spawn {
     float heading_rad = 0.0f;  // 0 faces +x, positive turns towards -z (counter-clockwise seen from above)
 };
 
-// Where the harbour's wave grid lies (specs/water.md); a level without one has a
+// Where the harbour's wave grid lies (docs/effects/water.md); a level without one has a
 // flat sea.
 struct WaterGridDesc {
     bool enabled = false;
@@ -48,7 +48,7 @@ struct WaterGridDesc {
     float damping_per_s = 0.25f;
 };
 
-// The windshield rain's glass (specs/rain.md): the car's windshield as two polylines
+// The windshield rain's glass (docs/effects/rain.md): the car's windshield as two polylines
 // in car model space, its lower and upper edge from the car's left to its right, the
 // glass ruled between them; and the size of the drop grid's square cells.
 struct RainDesc {
@@ -56,7 +56,7 @@ struct RainDesc {
     std::vector<glm::vec3> glass_lower, glass_upper;  // empty: the car has no windshield
 };
 
-// The glass tank of particle liquid (specs/fluid.md). The smoothing fields are read
+// The glass tank of particle liquid (docs/effects/fluid.md). The smoothing fields are read
 // by the renderer (effects/fluid), not the sim; the loader checks them.
 struct FluidTankDesc {
     bool enabled = false;
@@ -98,7 +98,7 @@ struct LevelDesc {
     RainDesc rain;
     WaterGridDesc water;
     FluidTankDesc fluid;
-    DustDesc dust;  // the dusty props (specs/dust.md)
+    DustDesc dust;  // the dusty props (docs/effects/dust.md)
 };
 
 }  // namespace sim
