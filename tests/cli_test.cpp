@@ -33,10 +33,10 @@ struct CommandResult {
 };
 
 // `env_prefix`, e.g. "env -u DISPLAY", runs the program without a display.
-CommandResult run(const std::string& args, const std::string& env_prefix = "") {
-    std::string cmd = env_prefix + std::string(SPINDRIFT_BIN) + " " + args + " 2>&1";
+// A command's output (stdout and stderr) and exit code.
+CommandResult run_command(const std::string& cmd) {
     CommandResult r;
-    FILE* p = popen(cmd.c_str(), "r");
+    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
     if (!p) return r;
     char buf[4096];
     size_t n;
@@ -46,19 +46,12 @@ CommandResult run(const std::string& args, const std::string& env_prefix = "") {
     return r;
 }
 
-// The GL-free checker, spindrift-check, the same way.
-CommandResult run_check(const std::string& args) {
-    std::string cmd = std::string(SPINDRIFT_CHECK_BIN) + " " + args + " 2>&1";
-    CommandResult r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    char buf[4096];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
-    int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return r;
+CommandResult run(const std::string& args, const std::string& env_prefix = "") {
+    return run_command(env_prefix + std::string(SPINDRIFT_BIN) + " " + args);
 }
+
+// The GL-free checker, spindrift-check, the same way.
+CommandResult run_check(const std::string& args) { return run_command(std::string(SPINDRIFT_CHECK_BIN) + " " + args); }
 
 std::string read_file(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);

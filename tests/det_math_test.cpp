@@ -40,6 +40,15 @@ struct Measured {
     double worst = 0.0;  // in ulps
     double at_x = 0.0, at_y = 0.0, got = 0.0, want = 0.0;
     size_t samples = 0, not_nearest = 0;
+    // Keeps the worst error seen (a NaN error counts as worse than any).
+    void note(double error, double x, double y, double got_value, double want_value) {
+        if (error <= worst) return;
+        worst = error;
+        at_x = x;
+        at_y = y;
+        got = got_value;
+        want = want_value;
+    }
 };
 
 // NaN must give NaN; infinities, zeros and results that round to them must match
@@ -57,14 +66,7 @@ void measure_float(Measured& m, double x, double y, float got, double want) {
         return;
     }
     if (got != nearest) ++m.not_nearest;
-    const double e = std::fabs(double(got) - want) / float_ulp(want);
-    if (!(e <= m.worst)) {
-        m.worst = e;
-        m.at_x = x;
-        m.at_y = y;
-        m.got = got;
-        m.want = want;
-    }
+    m.note(std::fabs(double(got) - want) / float_ulp(want), x, y, got, want);
 }
 
 void measure_double(Measured& m, double x, double y, double got, double want) {
@@ -78,14 +80,7 @@ void measure_double(Measured& m, double x, double y, double got, double want) {
         return;
     }
     if (got != want) ++m.not_nearest;
-    const double e = std::fabs(got - want) / double_ulp(want);
-    if (!(e <= m.worst)) {
-        m.worst = e;
-        m.at_x = x;
-        m.at_y = y;
-        m.got = got;
-        m.want = want;
-    }
+    m.note(std::fabs(got - want) / double_ulp(want), x, y, got, want);
 }
 
 void report(const char* what, const char* unit, const Measured& m) {
