@@ -2,21 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "sim/core/Hash.h"
+#include "sim/core/NumberText.h"
 
 namespace sim {
 
 namespace {
-
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 // Kernels in units of the kernel radius h: poly6 without its factor 315 / (64 pi h^3),
 // which cancels in density / rest density, and the spiky gradient (45 / (pi h^4))

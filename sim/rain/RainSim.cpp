@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
+#include "sim/core/NumberText.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Car.h"
 #include "sim/world/World.h"
@@ -22,12 +22,6 @@ constexpr uint64_t kRainStream = 0x5241494eull;  // "RAIN"
 // The eight neighbour steps, counter-clockwise from +u.
 constexpr int kStepU[8] = {1, 1, 0, -1, -1, -1, 0, 1};
 constexpr int kStepV[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 const RainParams& checked(const RainParams& p) {
     auto refuse = [](const std::string& what) { throw std::invalid_argument("rain: " + what); };

@@ -2,22 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
+#include "sim/core/NumberText.h"
 
 namespace sim {
 
 namespace {
-
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 bool positive(float v) { return std::isfinite(v) && v > 0.0f; }
 

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
+#include "sim/core/NumberText.h"
 
 namespace sim {
 
@@ -15,12 +15,6 @@ namespace {
 
 constexpr float kPi = 3.14159265f;
 constexpr size_t kParallelFrom = 2048;  // fewer droplets are not worth waking the pool
-
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 static_assert(sizeof(SprayParticle) == 8 * sizeof(float), "SprayParticle is hashed as raw floats");
 

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "sim/core/Hash.h"
+#include "sim/core/NumberText.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/world/Terrain.h"
@@ -25,12 +25,6 @@ constexpr float kPushVolumePerR2 = kPi * (0.5f - 2.0f / (kPi * kPi));
 constexpr float kWakeDepthPerSpeed_s = 0.024f;
 constexpr float kRainDimple_m = 0.002f;
 constexpr uint64_t kWaterStream = 0x5741544552ull;  // "WATER": the water's own PCG32 stream
-
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
 
 bool finite3(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 

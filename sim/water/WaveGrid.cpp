@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
+#include "sim/core/NumberText.h"
 #include "sim/water/WaveRow.h"
 
 namespace sim {
@@ -15,12 +15,6 @@ namespace sim {
 namespace {
 
 constexpr float kPi = 3.14159265f;
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
 [[noreturn]] void refuse(const std::string& what) { throw std::invalid_argument("WaveGrid: " + what); }
 
 }  // namespace
