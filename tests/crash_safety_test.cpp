@@ -90,8 +90,8 @@ void record_slowly(const fs::path& out, uint32_t ticks) {
     }
 }
 
-// Runs `body` in a child process; returns its wait status.
-int run_child(const std::function<void()>& body) {
+// Forks a child that runs `body` and exits 0, or 3 if it threw.
+pid_t start_child(const std::function<void()>& body) {
     const pid_t child = ::fork();
     if (child == 0) {
         try {
@@ -101,28 +101,25 @@ int run_child(const std::function<void()>& body) {
         }
         ::_exit(0);
     }
+    return child;
+}
+
+int wait_status(pid_t child) {
     int status = 0;
     ::waitpid(child, &status, 0);
     return status;
 }
 
+// Runs `body` in a child process; returns its wait status.
+int run_child(const std::function<void()>& body) { return wait_status(start_child(body)); }
+
 // Starts `body` in a child, SIGKILLs it after `delay` (unless it ended first); returns
 // whether the kill landed.
 bool kill_child_after(const std::function<void()>& body, std::chrono::microseconds delay) {
-    const pid_t child = ::fork();
-    if (child == 0) {
-        try {
-            body();
-        } catch (...) {
-            ::_exit(3);
-        }
-        ::_exit(0);
-    }
+    const pid_t child = start_child(body);
     std::this_thread::sleep_for(delay);
     ::kill(child, SIGKILL);
-    int status = 0;
-    ::waitpid(child, &status, 0);
-    return WIFSIGNALED(status);
+    return WIFSIGNALED(wait_status(child));
 }
 
 // In a child whose files may not grow past `limit_bytes` (writes fail with EFBIG): runs
