@@ -21,7 +21,7 @@ struct RainLook {
     bool enabled = true;        // off: the pass draws nothing (to compare with and without)
     float radius_scale = 3.5f;  // drops drawn this much wider than their contact radius, to read on screen
     float refraction = 0.2f;    // screen heights the lookup moves per unit of normal tilt: a drop's image flips...
-    float reach = 10.0f;        // ...but at most this many of the drop's radii on screen
+    float reach = 16.0f;        // ...but at most this many of the drop's radii on screen
     float blur_bias = 0.5f;     // mip bias of the image in a drop: the eye is focused on the road
     float glint = 1.5f;         // the sun's highlight, times the sun's radiance
     float film = 0.5f;          // how much the wet streak behind a runner blurs and brightens the view

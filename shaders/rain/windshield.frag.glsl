@@ -106,8 +106,8 @@ void main() {
     vec3 glint = u_sun_radiance * (u_glint * mu32) + sky_radiance(vec3(0.0, 1.0, 0.0), false) * (0.5 * up8);
     vec3 sky = sky_radiance(r, false);
     vec3 drop = mix(behind, sky, fresnel) + glint;
-    // The film: the same view, blurred, with a faint sheen of the sky.
-    vec3 wet = behind + 0.04 * sky;
+    // The film: the same view, blurred, with a sheen of the sky.
+    vec3 wet = mix(behind, sky, 0.2);
 
     float alpha = max(cover, film);
     vec3 colour = alpha > 0.0 ? mix(wet, drop, cover / alpha) : vec3(0.0);
