@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "sim/rain/GlassSurface.h"
 
@@ -16,9 +17,11 @@ RainPass::RainPass(int height_map_width, int height_map_height)
 void RainPass::register_params(ParamRegistry& params) {
     params.add("rain", "draw", &look_.enabled);
     params.add("rain", "drop size on screen", &look_.radius_scale, 1.0f, 4.0f);
-    params.add("rain", "refraction", &look_.refraction, 0.0f, 0.2f);
-    params.add("rain", "background blur (mip)", &look_.blur_lod, 0.0f, 5.0f);
-    params.add("rain", "rim darkening", &look_.rim, 0.0f, 1.0f);
+    params.add("rain", "refraction", &look_.refraction, 0.0f, 0.6f);
+    params.add("rain", "refraction reach (drop radii)", &look_.reach, 1.0f, 10.0f);
+    params.add("rain", "background blur (mip bias)", &look_.blur_bias, 0.0f, 4.0f);
+    params.add("rain", "sun glint", &look_.glint, 0.0f, 4.0f);
+    params.add("rain", "wet streaks", &look_.film, 0.0f, 1.0f);
     params.add("rain", "height compression steps", &look_.compression_steps, 0, 5);
 }
 
@@ -67,6 +70,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     glBlitNamedFramebuffer(t.scene().id(), behind_fbo_.id(), 0, 0, behind_w_, behind_h_, 0, 0, behind_w_, behind_h_,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
     behind_.generate_mipmaps();
+    upload_film(view);
 
     glBindFramebuffer(GL_FRAMEBUFFER, scene_colour_fbo_.id());
     glViewport(0, 0, behind_w_, behind_h_);
@@ -80,7 +84,8 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_FALSE);
     glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    // Alpha composited too: the scene's is 1 and stays 1, a cleared 0 keeps the coverage.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
     shade_.use();
     frame.scene.lighting.apply_sky(shade_);
@@ -91,10 +96,16 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     shade_.set("u_inv_viewport", glm::vec2(1.0f / float(behind_w_), 1.0f / float(behind_h_)));
     shade_.set("u_aspect", float(behind_w_) / float(behind_h_));
     shade_.set("u_refraction", look_.refraction);
-    shade_.set("u_blur_lod", std::max(look_.blur_lod + std::log2(float(behind_h_) / 360.0f), 0.0f));
-    shade_.set("u_rim", look_.rim);
+    shade_.set("u_reach", look_.reach);
+    shade_.set("u_blur_bias", look_.blur_bias);
+    shade_.set("u_glint", look_.glint);
+    shade_.set("u_film", view.film.empty() ? 0.0f : look_.film);
+    shade_.set("u_film_scale", view.film_cell_m > 0.0f ? glm::vec2(1.0f / (float(film_cols_) * view.film_cell_m),
+                                                                   1.0f / (float(film_rows_) * view.film_cell_m))
+                                                       : glm::vec2(0.0f));
     shade_.set("u_surface", 0);
     shade_.set("u_behind", 1);
+    shade_.set("u_film_map", 2);
     const int blades = int(std::min<size_t>(view.blades.size(), 2));
     static constexpr const char* kPivot[2] = {"u_blade_pivot[0]", "u_blade_pivot[1]"};
     static constexpr const char* kDir[2] = {"u_blade_dir[0]", "u_blade_dir[1]"};
@@ -108,11 +119,25 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     for (int b = blades; b < 2; ++b) shade_.set(kSpan[b], glm::vec2(0.0f));
     height_map_.surface().bind(0);
     behind_.bind(1);
+    film_.bind(2);
     mesh_->draw();
     glDisable(GL_BLEND);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
+}
+
+void RainPass::upload_film(const RainView& view) {
+    const int cols = view.film.empty() ? 1 : view.film_cols, rows = view.film.empty() ? 1 : view.film_rows;
+    if (film_cols_ != cols || film_rows_ != rows) {
+        film_cols_ = cols;
+        film_rows_ = rows;
+        film_ = gl::Texture::create_2d("rain.film", GL_R8, cols, rows);
+        film_.set_filter(GL_LINEAR, GL_LINEAR);
+        film_.set_wrap(GL_CLAMP_TO_EDGE);
+    }
+    static constexpr uint8_t kDry[1] = {0};
+    film_.upload(GL_RED, GL_UNSIGNED_BYTE, view.film.empty() ? std::span<const uint8_t>(kDry) : std::span<const uint8_t>(view.film));
 }
 
 }  // namespace effects

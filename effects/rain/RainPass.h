@@ -20,9 +20,11 @@ namespace effects {
 struct RainLook {
     bool enabled = true;        // off: the pass draws nothing (to compare with and without)
     float radius_scale = 3.5f;  // drops drawn this much wider than their contact radius, to read on screen
-    float refraction = 0.08f;   // screen offset (of its height) per unit of normal tilt
-    float blur_lod = 2.5f;      // mip of the scene behind a drop 1 m from the eye, at 360 lines: out of focus
-    float rim = 0.4f;           // darkening at a drop's steep edge (light bent away)
+    float refraction = 0.2f;    // screen heights the lookup moves per unit of normal tilt: a drop's image flips...
+    float reach = 16.0f;        // ...but at most this many of the drop's radii on screen
+    float blur_bias = 0.5f;     // mip bias of the image in a drop: the eye is focused on the road
+    float glint = 1.5f;         // the sun's highlight, times the sun's radiance
+    float film = 0.5f;          // how much the wet streak behind a runner blurs and brightens the view
     int compression_steps = 0;  // the seed's height compression, off (DropHeightMap.h)
 };
 
@@ -40,11 +42,15 @@ public:
     bool drew_last_frame() const { return drew_; }
 
 private:
+    void upload_film(const RainView& view);
+
     DropHeightMap height_map_;
     int made_width_, made_height_;  // the size asked for at construction: the high preset's
     gl::Program shade_;
     std::unique_ptr<WindshieldMesh> mesh_;
     gl::Texture behind_;  // the finished scene with mips, for the out-of-focus refraction
+    gl::Texture film_;    // RainView::film, one texel a glass cell
+    int film_cols_ = 0, film_rows_ = 0;
     gl::Framebuffer behind_fbo_, scene_colour_fbo_;
     int behind_w_ = 0, behind_h_ = 0;
     RainView view_;  // reused each frame

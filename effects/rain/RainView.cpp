@@ -1,6 +1,7 @@
 #include "effects/rain/RainView.h"
 
 #include "sim/player/Player.h"
+#include "sim/rain/GlassSurface.h"
 #include "sim/rain/RainSim.h"
 #include "sim/vehicle/Car.h"
 #include "sim/world/World.h"
@@ -10,6 +11,7 @@ namespace effects {
 void gather_rain_view(const sim::World& world, RainView& out) {
     out.metaballs.clear();
     out.blades.clear();
+    out.film.clear();
     const sim::RainSim* rain = world.find<sim::RainSim>();
     const sim::Player* player = world.find<sim::Player>();
     const sim::Car* car = world.find<sim::Car>();
@@ -23,6 +25,12 @@ void gather_rain_view(const sim::World& world, RainView& out) {
     for (const sim::WiperBlade& b : rain->blades())
         out.blades.push_back({b.params().pivot_m, b.direction(), b.params().inner_m, b.params().outer_m});
     out.wipers_parked = rain->motor().parked();
+    const sim::GlassSurface& glass = rain->glass();
+    out.film_cols = glass.cols();
+    out.film_rows = glass.rows();
+    out.film_cell_m = glass.cell_m();
+    out.film.resize(size_t(glass.cell_count()));
+    for (int c = 0; c < glass.cell_count(); ++c) out.film[size_t(c)] = uint8_t(rain->wetness(c) * 255.0f + 0.5f);
 }
 
 }  // namespace effects

@@ -4,6 +4,7 @@
 // metaball in the glass's coordinates, the wiper blades, and where the car and the eye
 // are. Gathered from the world's sim::RainSim each frame; tests and the benchmark fill
 // it directly.
+#include <cstdint>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -42,6 +43,12 @@ struct RainView {
     std::vector<RainMetaball> metaballs;
     std::vector<WiperBladeView> blades;
     bool wipers_parked = true;
+    // The film a runner leaves: per glass cell (rows of film_cols from the lower edge,
+    // cells of film_cell_m), 255 where a drop just ran, fading to 0 as it dries. Empty:
+    // no film.
+    std::vector<uint8_t> film;
+    int film_cols = 0, film_rows = 0;
+    float film_cell_m = 0.0f;
 
     // True when there is nothing to draw: not in the driver's seat, no glass, or a
     // dry glass with the wipers at rest.

@@ -139,14 +139,15 @@ void RainSim::advance(float intensity, WiperMode wipers, float car_speed_mps, co
     compact();
 }
 
-float RainSim::affinity(int cell) const {
-    float a = glass_.cell(cell).affinity;
+float RainSim::wetness(int cell) const {
     const uint32_t wet = wet_tick_[size_t(cell)];
-    if (wet != 0 && p_.wet_memory_s > 0.0f) {
-        const float age_s = float(uint32_t(tick_) + 1u - wet) * (1.0f / 60.0f);
-        a += p_.wet_affinity * std::max(1.0f - age_s / p_.wet_memory_s, 0.0f);
-    }
-    return a;
+    if (wet == 0 || p_.wet_memory_s <= 0.0f) return 0.0f;
+    const float age_s = float(uint32_t(tick_) + 1u - wet) * (1.0f / 60.0f);
+    return std::max(1.0f - age_s / p_.wet_memory_s, 0.0f);
+}
+
+float RainSim::affinity(int cell) const {
+    return glass_.cell(cell).affinity + p_.wet_affinity * wetness(cell);
 }
 
 int32_t RainSim::new_drop(glm::vec2 pos_m, float mass_mg, uint32_t flags) {

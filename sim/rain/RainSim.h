@@ -78,6 +78,9 @@ public:
     const WiperMotor& motor() const { return motor_; }
     const RainLedger& ledger() const { return ledger_; }
     double mass_on_glass_mg() const;
+    // How freshly a drop ran into a cell: 1 this tick, fading to 0 over wet_memory_s (the
+    // memory that steers later drops; the renderer draws it as the streak a runner leaves).
+    float wetness(int cell) const;
     // A drop's contact radius: a hemisphere of its volume.
     static float radius_m(float mass_mg);
 
