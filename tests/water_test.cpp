@@ -121,11 +121,12 @@ TEST(SplashSheet, VerticesFallBackBelowTheSurfaceAndRipple) {
     }
     EXPECT_LT(ticks, 120);  // back within two seconds
     EXPECT_GT(highest, 0.3f);  // but it really rose
-    // Every launched vertex either fell back (a ripple) or tore off as a droplet, and
-    // the crown's top did tear, but most of the film came down whole.
+    // Every launched vertex either fell back (a ripple) or tore off as a droplet: the
+    // crown's rim and the jet's top break into drops, but a good part of the film
+    // comes down whole.
     EXPECT_EQ(int(ripples.size()) + torn, launched);
-    EXPECT_GT(torn, 0);
-    EXPECT_LT(torn, launched / 4) << torn << " of " << launched << " tore off";
+    EXPECT_GT(torn, launched / 10) << torn << " of " << launched << " tore off";
+    EXPECT_LT(torn, launched * 3 / 4) << torn << " of " << launched << " tore off";
     for (const glm::vec3& p : s.positions()) ASSERT_NEAR(p.y, -s.params().hidden_depth_m, 1e-6f);
     for (uint8_t a : s.airborne()) ASSERT_EQ(a, 0);
 }
@@ -266,6 +267,7 @@ TEST(Water, DropletsRippleTheGridWhereTheyLand) {
     // random numbers, so the grids differ only by the droplets' ripples.
     sim::WaterParams dry;
     dry.max_spray_per_impact = 0;
+    dry.spray.max_particles = 0;  // nor the droplets torn off the sheets
     Harbour with(make_test_level()), without(make_test_level(), 1, dry);
     drop(with, kDroppedStone, {50.0f, 4.0f, 20.0f});
     drop(without, kDroppedStone, {50.0f, 4.0f, 20.0f});
@@ -279,7 +281,10 @@ TEST(Water, DropletsRippleTheGridWhereTheyLand) {
         const auto& a = with.water->grid().heights();
         const auto& b = without.water->grid().heights();
         const sim::WaveGrid& g = with.water->grid();
-        const bool landed = with.water->spray().particles().size() < before.size();
+        // Torn film joins the spray as it flies: landed means fewer than were there plus those.
+        size_t joined = 0;
+        for (const sim::SplashSheet& sheet : with.water->sheets()) joined += sheet.torn().size();
+        const bool landed = with.water->spray().particles().size() < before.size() + joined;
         if (!landed && landing_ticks == 0) {
             ASSERT_EQ(a, b) << "tick " << t << ": the grids differ before any droplet landed";
             continue;

@@ -37,6 +37,8 @@ SplashSheet::SplashSheet(const SplashSheetParams& params) : p_(params), n_(param
     if (!std::isfinite(p_.tear_stretch) || p_.tear_stretch < 1.0f)
         refuse("tear_stretch must be >= 1, got " + num(p_.tear_stretch));
     if (!positive(p_.torn_drop_radius_m)) refuse("torn_drop_radius_m must be positive, got " + num(p_.torn_drop_radius_m));
+    if (!std::isfinite(p_.rim_break_stretch) || p_.rim_break_stretch < 1.0f)
+        refuse("rim_break_stretch must be >= 1, got " + num(p_.rim_break_stretch));
     const size_t count = size_t(n_) * size_t(n_);
     pos_.assign(count, glm::vec3(0.0f));
     vel_.assign(count, glm::vec3(0.0f));
@@ -133,18 +135,22 @@ int SplashSheet::second_splash(float object_radius_m, float momentum_kgmps, Rng&
     const int patch = std::max(1, ring_band(object_radius_m).outer / 2);
     const float s = launch_speed(momentum_kgmps);
     const int half = n_ / 2;
+    // One alpha for the whole jet and a smooth fall-off from its axis: drawn per vertex,
+    // neighbours flew apart and the column read as a heap of shards.
+    const float alpha = 0.75f + 0.25f * rng.range(0.1f, 1.0f);
+    const float reach = float(patch + 1);
     int launched = 0;
     for (int dj = -patch; dj <= patch; ++dj)
         for (int di = -patch; di <= patch; ++di) {
             const size_t idx = size_t(half + dj) * size_t(n_) + size_t(half + di);
             if (airborne_[idx]) continue;
-            const int ring = std::max(std::abs(di), std::abs(dj));
-            const float up = (0.75f + 0.25f * rng.range(0.1f, 1.0f)) * s * (1.0f - 0.4f * float(ring) / float(patch));
+            const float r2 = float(di * di + dj * dj) / (reach * reach);
+            const float up = alpha * s * (1.0f - 0.6f * r2);
             glm::vec3 v(0.0f, up, 0.0f);
-            if (ring > 0) {  // a slight outward lean keeps the column from being a needle
+            if (r2 > 0.0f) {  // a slight outward lean keeps the column from being a needle
                 float len = std::sqrt(float(di * di + dj * dj));
-                v.x = 0.1f * up * float(di) / len;
-                v.z = 0.1f * up * float(dj) / len;
+                v.x = 0.05f * up * float(di) / len;
+                v.z = 0.05f * up * float(dj) / len;
             }
             launch(idx, v, grid, sea_level_m);
             ++launched;
@@ -176,21 +182,37 @@ void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::v
         }
     }
     // Torn off: no airborne neighbour within reach, so no triangle of the film holds it
-    // (a lone vertex would otherwise fly on as an invisible point, or a dot). All are
-    // found before any is hidden, so the order of the scan does not matter.
-    const float reach = p_.tear_stretch * p_.spacing_m;
+    // (a lone vertex would otherwise fly on as an invisible point, or a dot); or on the
+    // film's free edge or at a peak with its longest bond past the rim's breaking
+    // stretch, or at a peak past its apex. All are found before any is hidden, so the order of the scan does not
+    // matter, and a receding rim loses one row of vertices a tick at most.
+    const float reach2 = p_.tear_stretch * p_.spacing_m * p_.tear_stretch * p_.spacing_m;
+    const float rim2 = p_.rim_break_stretch * p_.spacing_m * p_.rim_break_stretch * p_.spacing_m;
     const size_t n = size_t(n_);
-    auto holds = [&](size_t a, size_t b) {
-        const glm::vec3 d = pos_[b] - pos_[a];
-        return airborne_[b] && d.x * d.x + d.y * d.y + d.z * d.z <= reach * reach;
-    };
     tearing_.clear();
     for (size_t idx = 0; idx < airborne_.size(); ++idx) {
         if (!airborne_[idx]) continue;
         const size_t i = idx % n, j = idx / n;
-        const bool held = (i > 0 && holds(idx, idx - 1)) || (i + 1 < n && holds(idx, idx + 1)) ||
-                          (j > 0 && holds(idx, idx - n)) || (j + 1 < n && holds(idx, idx + n));
-        if (!held) tearing_.push_back(idx);
+        bool held = false, edge = false, peak = true;
+        float longest2 = 0.0f;
+        for (int k = 0; k < 4; ++k) {
+            if ((k == 0 && i == 0) || (k == 1 && i + 1 == n) || (k == 2 && j == 0) || (k == 3 && j + 1 == n)) {
+                edge = true;
+                continue;
+            }
+            const size_t b = k == 0 ? idx - 1 : k == 1 ? idx + 1 : k == 2 ? idx - n : idx + n;
+            if (!airborne_[b]) {
+                edge = true;
+                continue;
+            }
+            const glm::vec3 d = pos_[b] - pos_[idx];
+            const float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+            held = held || d2 <= reach2;
+            longest2 = std::max(longest2, d2);
+            peak = peak && pos_[b].y < pos_[idx].y;
+        }
+        // A peak past its apex pinches off: the jet's top falls apart into drops.
+        if (!held || ((edge || peak) && longest2 > rim2) || (peak && vel_[idx].y < 0.0f)) tearing_.push_back(idx);
     }
     for (size_t idx : tearing_) {
         torn_.push_back({pos_[idx], vel_[idx]});

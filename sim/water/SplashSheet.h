@@ -36,6 +36,12 @@ struct SplashSheetParams {
     // sheet as a droplet of torn_drop_radius_m, a scrap of film larger than the spray.
     float tear_stretch = 12.0f;
     float torn_drop_radius_m = 0.03f;
+    // The film thins fastest at its free edge (the crown's rim) and at a peak (the jet's
+    // top): a vertex there whose longest bond to an airborne neighbour has stretched past
+    // rim_break_stretch spacings breaks off as a droplet too, so the rim sheds drops and
+    // recedes; a peak past its apex pinches off, so the jet's column breaks into drops
+    // from its top down.
+    float rim_break_stretch = 5.0f;
 };
 
 // A vertex that tore off the film this step, to fly on as a droplet.
@@ -102,15 +108,17 @@ public:
                      float sea_level_m, std::optional<glm::vec2> ahead = std::nullopt,
                      glm::vec2 carry_xz = glm::vec2(0.0f));
     // Second splash (seed eq. 4.4) after the crater refills: a near-vertical jet from
-    // a small central patch (the seed's single vertex looked coarse), alpha*s upward,
-    // weaker towards the patch edge, with a slight outward lean. Returns the count.
+    // a small central patch (the seed's single vertex looked coarse), alpha*s upward
+    // (one alpha for the patch), falling off smoothly towards its edge, with a slight
+    // outward lean: a column whose top breaks into drops. Returns the count.
     int second_splash(float object_radius_m, float momentum_kgmps, Rng& rng, const WaveGrid& grid,
                       float sea_level_m);
 
     // Ballistic flight under gravity; a vertex that falls back below the surface hides
     // again at its rest point and adds a Ripple where it fell, one that has torn off
-    // hides and is listed in torn(). Hidden vertices follow the surface while the
-    // sheet is active.
+    // (no airborne neighbour within tear_stretch, a thinned rim or peak past
+    // rim_break_stretch, or a peak past its apex) hides and is listed in torn(). Hidden vertices follow the
+    // surface while the sheet is active.
     void step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples);
     const std::vector<TornOff>& torn() const { return torn_; }  // in the last step, in index order
 
