@@ -323,7 +323,7 @@ TEST(LevelLoader, BrokenCoursesAndTargetsAreNamed) {
         {[](json& j) { j["courses"][0]["gates"][0]["posts"] = 2; }, {"courses[0].gates[0].posts: unknown key"}},
         {[](json& j) { j["courses"][0]["gates"][1]["centre_xz"] = {30, 20}; }, {"courses[0].gates[1]: a car's gate must stand on land"}},
         {[](json& j) { j["courses"][1]["gates"][1]["centre_xz"] = {30, -20}; }, {"courses[1].gates[1]: a boat's gate must stand on the sea"}},
-        {[](json& j) { j["courses"][0]["gates"][0]["centre_xz"] = {-158, -10}; }, {"courses[0].gates[0]: a post lies outside the world"}},
+        {[](json& j) { j["courses"][0]["gates"][0]["centre_xz"] = {-165, -10}; }, {"courses[0].gates[0]: a post lies outside the world"}},
         {[](json& j) { j["courses"] = json::array({j["courses"][0], j["courses"][0], j["courses"][0], j["courses"][0], j["courses"][0],
                                                     j["courses"][0], j["courses"][0], j["courses"][0], j["courses"][0]}); },
          {"courses: 9 entries, at most 8 allowed"}},
