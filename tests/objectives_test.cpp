@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "game/level/LevelLoader.h"
+#include "game/play/ObjectiveHud.h"
 #include "game/replay/InputScript.h"
 #include "sim/core/DetMath.h"
 #include "sim/objectives/Course.h"
@@ -215,6 +217,18 @@ TEST(HarbourDriveScript, DrivesOneLapOfTheCarCourse) {
     EXPECT_EQ(course->laps(), 1u);
     ASSERT_TRUE(course->best_lap_ticks().has_value());
     EXPECT_EQ(*course->best_lap_ticks(), kHarbourDriveLapTicks);
+    const std::vector<std::string> summary = game::objective_summary_lines(world);
+    ASSERT_FALSE(summary.empty());
+    EXPECT_EQ(summary[0], "course quay (car): 1 lap, last " + game::lap_time_text(kHarbourDriveLapTicks) + ", best " +
+                              game::lap_time_text(kHarbourDriveLapTicks) + " (" + std::to_string(kHarbourDriveLapTicks) +
+                              " ticks)");
+}
+
+TEST(ObjectiveHud, LapTimesInMinutesSecondsAndHundredths) {
+    EXPECT_EQ(game::lap_time_text(0), "0:00.00");
+    EXPECT_EQ(game::lap_time_text(1308), "0:21.80");
+    EXPECT_EQ(game::lap_time_text(61), "0:01.02");  // 1.0167 s, rounded
+    EXPECT_EQ(game::lap_time_text(60 * 75), "1:15.00");
 }
 
 }  // namespace
