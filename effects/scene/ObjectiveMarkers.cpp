@@ -1,5 +1,6 @@
 #include "effects/scene/ObjectiveMarkers.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,7 +12,7 @@ namespace effects {
 
 namespace {
 
-constexpr float kPostHeight_m = 3.6f;  // a car passes under the banner
+constexpr float kPostHeight_m = 5.6f;  // the banner clears the chase camera (3.2 m over the vehicle)
 constexpr float kPostHalfWidth_m = 0.14f;
 constexpr float kBannerHalfHeight_m = 0.35f;
 constexpr float kBannerHalfDepth_m = 0.05f;
@@ -37,17 +38,21 @@ ObjectiveMarker box(glm::vec3 centre, glm::vec3 half, float heading_rad, glm::ve
     return m;
 }
 
-void add_gate(const sim::GatePosts& posts, float base_y, bool next, bool start, std::vector<ObjectiveMarker>& out) {
+// Posts from `base_y` up to kPostHeight_m above `ground_y` (the sea's posts start below
+// its surface, so no wave shows their foot).
+void add_gate(const sim::GatePosts& posts, float ground_y, float base_y, bool next, bool start,
+              std::vector<ObjectiveMarker>& out) {
     const ObjectiveMarker::Glow glow = next ? ObjectiveMarker::Glow::Next : ObjectiveMarker::Glow::None;
+    const float top_y = ground_y + kPostHeight_m;
     for (glm::vec2 p : {posts.left, posts.right})
-        out.push_back(box({p.x, base_y + 0.5f * kPostHeight_m, p.y}, {kPostHalfWidth_m, 0.5f * kPostHeight_m, kPostHalfWidth_m},
+        out.push_back(box({p.x, 0.5f * (base_y + top_y), p.y}, {kPostHalfWidth_m, 0.5f * (top_y - base_y), kPostHalfWidth_m},
                           0.0f, next ? kNextTint : kPostTint, ObjectiveMarker::Glow::None));
     const glm::vec2 across = posts.right - posts.left;
     const glm::vec2 mid = 0.5f * (posts.left + posts.right);
     const float half_length = 0.5f * std::sqrt(across.x * across.x + across.y * across.y);
     // The banner's long axis is the box's x: turned onto the line between the posts.
     const float heading = std::atan2(-across.y, across.x);
-    out.push_back(box({mid.x, base_y + kPostHeight_m - kBannerHalfHeight_m, mid.y},
+    out.push_back(box({mid.x, top_y - kBannerHalfHeight_m, mid.y},
                       {half_length, kBannerHalfHeight_m, kBannerHalfDepth_m}, heading,
                       next ? kNextTint : (start ? kStartBannerTint : kBannerTint), glow));
 }
@@ -63,10 +68,10 @@ std::vector<ObjectiveMarker> objective_markers(const sim::World& world) {
         const bool boat = c.desc().vehicle == sim::CourseVehicle::Boat;
         for (size_t g = 0; g < c.desc().gates.size(); ++g) {
             const sim::GatePosts& posts = c.posts(g);
-            // Posts stand on the ground, or rise from the sea bed through the water.
-            const float base_y = boat ? level.sea_level_m - 1.0f
-                                      : std::min(world.terrain().ground_height(posts.left), world.terrain().ground_height(posts.right));
-            add_gate(posts, base_y, g == c.next_gate(), g == 0, out);
+            // Posts stand on the ground, or in the sea.
+            const float ground_y = boat ? level.sea_level_m
+                                        : std::min(world.terrain().ground_height(posts.left), world.terrain().ground_height(posts.right));
+            add_gate(posts, ground_y, boat ? ground_y - 1.0f : ground_y, g == c.next_gate(), g == 0, out);
         }
     }
     for (const sim::TargetState& t : objectives->targets().states()) {

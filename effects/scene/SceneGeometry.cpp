@@ -34,7 +34,7 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
       sea_(make_sea_model(terrain.level().sea_level_m, 3000.0f)),
       sphere_(make_sphere_model(12, 20)),
       box_(make_box_model()),
-      next_box_(glowing(make_box_model(), glm::vec3(1.6f, 0.8f, 0.1f))),
+      next_box_(glowing(make_box_model(), glm::vec3(1.8f, 0.55f, 0.05f))),
       hit_sphere_(glowing(make_sphere_model(12, 20), glm::vec3(0.2f, 1.4f, 0.3f))) {
     for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
     for (size_t i = 0; i < desc.props.size(); ++i) {
