@@ -43,6 +43,7 @@ FramePoses capture_poses(const sim::World& world) {
     if (const auto* objects = world.find<sim::ThrownObjects>())
         for (const sim::ThrownObject& o : objects->objects())
             p.objects.push_back({o.position, o.radius_m, o.sinks(), o.age_ticks});
+    p.markers = objective_markers(world);
     return p;
 }
 

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "effects/scene/ObjectiveMarkers.h"
 #include "sim/core/Pose.h"
 #include "sim/player/CameraRig.h"
 #include "sim/world/World.h"
@@ -26,6 +27,7 @@ struct FramePoses {
         uint32_t age_ticks = 0;  // tells one object from the next that took its slot
     };
     std::vector<Object> objects;
+    std::vector<ObjectiveMarker> markers;  // gates and targets: they change only by the tick
 };
 
 FramePoses capture_poses(const sim::World& world);

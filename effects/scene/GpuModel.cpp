@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include <glm/common.hpp>
 
@@ -76,6 +77,30 @@ Model make_sphere_model(int rings, int segments) {
         for (int s = 0; s < segments; ++s) {
             uint32_t a = uint32_t(r * (segments + 1) + s), b = a + uint32_t(segments + 1);
             m.indices.insert(m.indices.end(), {a, a + 1, b, b, a + 1, b + 1});
+        }
+    model.meshes.push_back(std::move(m));
+    model.bounds_min = glm::vec3(-1.0f);
+    model.bounds_max = glm::vec3(1.0f);
+    return model;
+}
+
+Model make_box_model() {
+    Model model;
+    model.name = "box";
+    MeshData m;
+    m.name = "box";
+    m.roughness = 0.6f;
+    for (int axis = 0; axis < 3; ++axis)
+        for (float sign : {-1.0f, 1.0f}) {
+            glm::vec3 n(0.0f), u(0.0f), v(0.0f);
+            n[axis] = sign;
+            u[(axis + 1) % 3] = 1.0f;
+            v[(axis + 2) % 3] = 1.0f;
+            if (sign < 0.0f) std::swap(u, v);  // counter-clockwise seen from outside
+            const uint32_t first = uint32_t(m.vertices.size());
+            for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
+                m.vertices.push_back({n + c.x * u + c.y * v, n, glm::vec4(1.0f)});
+            m.indices.insert(m.indices.end(), {first, first + 1, first + 2, first, first + 2, first + 3});
         }
     model.meshes.push_back(std::move(m));
     model.bounds_min = glm::vec3(-1.0f);

@@ -55,5 +55,7 @@ private:
 
 // A unit sphere (radius 1) for thrown objects.
 Model make_sphere_model(int rings, int segments);
+// The cube [-1, 1]^3 with a flat normal per face.
+Model make_box_model();
 
 }  // namespace effects

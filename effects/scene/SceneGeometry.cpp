@@ -14,6 +14,12 @@ namespace effects {
 namespace {
 constexpr int kMaxRoads = 16;  // size of u_roads in mesh.frag.glsl
 
+// A model whose every mesh gives off `emissive` (HDR radiance) on top of its shading.
+Model glowing(Model m, glm::vec3 emissive) {
+    for (MeshData& mesh : m.meshes) mesh.emissive = emissive;
+    return m;
+}
+
 // The model matrix, and the normal matrix once per draw on the CPU, not per vertex on the GPU.
 void place(const gl::Program& p, const glm::mat4& model, bool depth_only) {
     p.set("u_model", model);
@@ -26,7 +32,10 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
       level_(terrain.level()),
       terrain_(make_terrain_model(terrain, 2.0f)),
       sea_(make_sea_model(terrain.level().sea_level_m, 3000.0f)),
-      sphere_(make_sphere_model(12, 20)) {
+      sphere_(make_sphere_model(12, 20)),
+      box_(make_box_model()),
+      next_box_(glowing(make_box_model(), glm::vec3(1.8f, 0.55f, 0.05f))),
+      hit_sphere_(glowing(make_sphere_model(12, 20), glm::vec3(0.2f, 1.4f, 0.3f))) {
     for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
     for (size_t i = 0; i < desc.props.size(); ++i) {
         const Model& m = desc.models[size_t(desc.props[i].model)];
@@ -120,6 +129,19 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
         place(p, m, depth_only);
         sphere_.draw(p, depth_only);
     }
+    draw_markers(p, poses, depth_only, view);
+}
+
+void SceneGeometry::draw_markers(const gl::Program& p, const FramePoses& poses, bool depth_only, const Frustum& view) const {
+    for (const ObjectiveMarker& m : poses.markers) {
+        if (view.outside(m.lo, m.hi)) continue;
+        if (!depth_only) p.set("u_tint", m.tint);
+        place(p, m.transform, depth_only);
+        const bool ball = m.shape == ObjectiveMarker::Shape::Ball;
+        if (ball) (m.glow == ObjectiveMarker::Glow::Hit ? hit_sphere_ : sphere_).draw(p, depth_only);
+        else (m.glow == ObjectiveMarker::Glow::Next ? next_box_ : box_).draw(p, depth_only);
+    }
+    if (!depth_only) p.set("u_tint", glm::vec4(1.0f));
 }
 
 }  // namespace effects

@@ -42,11 +42,16 @@ public:
 private:
     // The car, the boat and the thrown objects.
     void draw_moving(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view) const;
+    // The objectives' gates and targets: they change with the tick, so they cast their
+    // shadows with what moves.
+    void draw_markers(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view) const;
 
     const SceneDesc& desc_;
     const sim::LevelDesc& level_;
     std::vector<std::unique_ptr<GpuModel>> models_;
     GpuModel terrain_, sea_, sphere_;
+    // The markers' shapes, plain and giving off light: the next gate amber, a hit buoy green.
+    GpuModel box_, next_box_, hit_sphere_;
     glm::vec3 props_min_{0.0f}, props_max_{0.0f};
     std::vector<std::pair<glm::vec3, glm::vec3>> prop_bounds_;  // world space, per instance
 };

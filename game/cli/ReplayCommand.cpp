@@ -17,6 +17,7 @@
 #include "game/cli/QualityOption.h"
 #include "game/level/LevelMemory.h"
 #include "game/platform/HeadlessContext.h"
+#include "game/play/ObjectiveHud.h"
 #include "game/play/PlayMode.h"
 #include "game/replay/FrameSelection.h"
 #include "game/replay/ReplayCheck.h"
@@ -152,6 +153,9 @@ int replay_command(const std::vector<std::string>& argv) {
     std::cout << path.string() << ": " << total << " ticks";
     if (check) std::cout << ", " << checker.hashes_checked() << " hash checks";
     std::cout << "\n";
+    // The objectives as the ticks left them: with --check they follow from the checked hashes.
+    if (!divergence)
+        for (const std::string& line : objective_summary_lines(world)) std::cout << "  " << line << "\n";
     for (const FrameOutcome& o : outcomes) {
         std::cout << "  " << o.line << "\n";
         ok = ok && o.ok;

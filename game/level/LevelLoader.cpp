@@ -21,6 +21,7 @@
 #include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 #include "sim/fluid/FluidTank.h"
+#include "sim/objectives/Course.h"
 
 namespace game {
 
@@ -32,6 +33,11 @@ namespace {
 constexpr size_t kMaxHills = 256;
 constexpr size_t kMaxRoads = 1024;
 constexpr float kMaxAbsCoordinate_m = 1000.0f;
+constexpr size_t kMaxCourses = 8;
+constexpr size_t kMaxGates = 64;
+constexpr size_t kMaxTargets = 64;
+constexpr float kMinGateWidth_m = 2.0f;
+constexpr float kMaxGateWidth_m = 40.0f;
 
 // A turn about +y by the sim's own sine and cosine (glm::rotate calls libm's): props'
 // transforms make the sim's solids and decks, which must be the same on every machine.
@@ -154,7 +160,7 @@ public:
 
     // Everything in the JSON, checked; assets are only named here, not loaded.
     void parse(sim::LevelDesc& level, uint64_t& budget_mib, std::vector<Placement>& placements, DustSection& dust) {
-        r_.object(doc_, "", {"format", "id", "seed", "budget_mib", "world", "roads", "sun", "rain", "water", "fluid", "dust", "car", "boat", "tank_spot", "props"});
+        r_.object(doc_, "", {"format", "id", "seed", "budget_mib", "world", "roads", "sun", "rain", "water", "fluid", "dust", "car", "boat", "tank_spot", "courses", "targets", "props"});
         const json& format = r_.required(doc_, "", "format");
         if (!format.is_number_unsigned() || format.get<uint64_t>() != 1)
             r_.fail("format", "unsupported format " + (format.is_primitive() ? format.dump() : std::string(format.type_name())) +
@@ -192,6 +198,16 @@ public:
         if (const json* water = LevelReader::optional(doc_, "water")) water_grid(*water, level);
         if (const json* fluid = LevelReader::optional(doc_, "fluid")) fluid_tank(*fluid, level);
         if (const json* d = LevelReader::optional(doc_, "dust")) dust_section(*d, level, dust);
+        if (const json* courses = LevelReader::optional(doc_, "courses")) {
+            r_.array(*courses, "courses", kMaxCourses);
+            for (size_t i = 0; i < courses->size(); ++i)
+                level.objectives.courses.push_back(course((*courses)[i], index_path("courses", i), level));
+        }
+        if (const json* targets = LevelReader::optional(doc_, "targets")) {
+            r_.array(*targets, "targets", kMaxTargets);
+            for (size_t i = 0; i < targets->size(); ++i)
+                level.objectives.targets.push_back(target((*targets)[i], index_path("targets", i), level));
+        }
         placements.push_back(placement(r_.required(doc_, "", "car"), "car", false));
         placements.push_back(placement(r_.required(doc_, "", "boat"), "boat", false));
         level.car_spawn = {placements[0].position, placements[0].heading_rad};
@@ -362,6 +378,60 @@ private:
         if (!(rect.min.x < rect.max.x && rect.min.y < rect.max.y))
             r_.fail(where + ".max_xz", "must be greater than min_xz in x and z");
         return rect;
+    }
+
+    // A course's gates stand where its vehicle goes: a car's on land, a boat's on the sea,
+    // both posts inside the world.
+    sim::CourseDesc course(const json& v, const std::string& where, const sim::LevelDesc& level) {
+        r_.object(v, where, {"name", "vehicle", "gates"});
+        sim::CourseDesc c;
+        c.name = r_.string(r_.required(v, where, "name"), where + ".name");
+        if (c.name.empty() || c.name.size() > 32) r_.fail(where + ".name", "must have 1 to 32 characters");
+        for (const sim::CourseDesc& other : level.objectives.courses)
+            if (other.name == c.name) r_.fail(where + ".name", "'" + c.name + "' names another course too");
+        const std::string vehicle = r_.string(r_.required(v, where, "vehicle"), where + ".vehicle");
+        if (vehicle == "car") c.vehicle = sim::CourseVehicle::Car;
+        else if (vehicle == "boat") c.vehicle = sim::CourseVehicle::Boat;
+        else r_.fail(where + ".vehicle", "expected \"car\" or \"boat\", got \"" + vehicle + "\"");
+        const json& gates = r_.array(r_.required(v, where, "gates"), where + ".gates", kMaxGates);
+        if (gates.size() < 2) r_.fail(where + ".gates", "a course needs at least 2 gates, found " + std::to_string(gates.size()));
+        for (size_t i = 0; i < gates.size(); ++i) {
+            const std::string at = index_path(where + ".gates", i);
+            const json& g = gates[i];
+            r_.object(g, at, {"centre_xz", "heading_deg", "width_m"});
+            sim::GateDesc gate;
+            gate.centre_xz = r_.vec<2>(r_.required(g, at, "centre_xz"), at + ".centre_xz");
+            gate.heading_rad = glm::radians(r_.number_in(r_.required(g, at, "heading_deg"), at + ".heading_deg", -720.0f, 720.0f));
+            gate.width_m = r_.number_in(r_.required(g, at, "width_m"), at + ".width_m", kMinGateWidth_m, kMaxGateWidth_m);
+            const sim::GatePosts posts = sim::gate_posts(gate);
+            for (glm::vec2 post : {posts.left, posts.right}) {
+                if (std::fabs(post.x) > half_extent_ || std::fabs(post.y) > half_extent_)
+                    r_.fail(at, "a post lies outside the world (half_extent_m " + show(half_extent_) + ")");
+                const bool on_land = post.y < level.shore_z_m;
+                if (c.vehicle == sim::CourseVehicle::Car && !on_land)
+                    r_.fail(at, "a car's gate must stand on land (z < shore_z_m " + show(level.shore_z_m) + "), a post is at z " + show(post.y));
+                if (c.vehicle == sim::CourseVehicle::Boat && on_land)
+                    r_.fail(at, "a boat's gate must stand on the sea (z >= shore_z_m " + show(level.shore_z_m) + "), a post is at z " + show(post.y));
+            }
+            c.gates.push_back(gate);
+        }
+        return c;
+    }
+
+    // Buoys float on the sea; crates stand on land.
+    sim::TargetDesc target(const json& v, const std::string& where, const sim::LevelDesc& level) {
+        r_.object(v, where, {"kind", "position", "radius_m"});
+        sim::TargetDesc t;
+        const std::string kind = r_.string(r_.required(v, where, "kind"), where + ".kind");
+        if (kind == "buoy") t.kind = sim::TargetKind::Buoy;
+        else if (kind == "crate") t.kind = sim::TargetKind::Crate;
+        else r_.fail(where + ".kind", "expected \"buoy\" or \"crate\", got \"" + kind + "\"");
+        t.position = position(r_.required(v, where, "position"), where + ".position");
+        t.radius_m = r_.number_in(r_.required(v, where, "radius_m"), where + ".radius_m", 0.2f, 3.0f);
+        const bool on_land = t.position.z < level.shore_z_m;
+        if (t.kind == sim::TargetKind::Buoy && on_land) r_.fail(where + ".position", "a buoy must float on the sea (z >= shore_z_m " + show(level.shore_z_m) + ")");
+        if (t.kind == sim::TargetKind::Crate && !on_land) r_.fail(where + ".position", "a crate must stand on land (z < shore_z_m " + show(level.shore_z_m) + ")");
+        return t;
     }
 
     glm::vec3 position(const json& v, const std::string& where) {

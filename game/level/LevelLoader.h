@@ -48,6 +48,17 @@
 //       "sources_per_prop": 5, "source_elevation_deg": 65, "source_distance": 2.5,
 //       "sample_spacing_m": 0.08, "object_clear_radius_m": 0.25, "shot_clear_radius_m": 0.6
 //     },
+//     "courses": [                       optional, at most 8: gates to lap (README, Playing)
+//       {"name": "quay",                 1..32 characters, one per course
+//        "vehicle": "car",               "car" (its gates on land) | "boat" (on the sea)
+//        "gates": [{"centre_xz": [-4, -10], "heading_deg": 0, "width_m": 10}, ...]}
+//     ],                                   2..64 gates, passed in order moving along
+//                                          heading_deg; width_m [2, 40]; gate 0 starts
+//                                          and ends a lap
+//     "targets": [                       optional, at most 64: hit by stones and shots
+//       {"kind": "buoy", "position": [x, y, z], "radius_m": 0.8}
+//     ],                                   "buoy" (on the sea) | "crate" (on land);
+//                                          radius_m [0.2, 3]
 //     "props": [                         optional, at most 4096
 //       {"asset": "warehouse.gltf", "position": [x, y, z],
 //        "heading_deg": 0,               optional (default 0)

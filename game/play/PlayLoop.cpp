@@ -9,6 +9,7 @@
 #include "game/capture/Readback.h"
 #include "game/play/FixedStepClock.h"
 #include "game/play/KeyboardInput.h"
+#include "game/play/ObjectiveHud.h"
 
 namespace game {
 
@@ -193,6 +194,7 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     hud.render_height = renderer_.targets().height();
     ui_.begin_frame(size.width, size.height);
     ui_.draw_hud(hud);
+    draw_objective_hud(world);
     if (panel_open_) {
         QualityChoice quality = quality_;
         if (ui_.draw_debug_panel(renderer_, quality, &panel_open_)) set_quality(quality);

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "sim/dust/DustDesc.h"
+#include "sim/objectives/ObjectiveDesc.h"
 
 namespace sim {
 
@@ -99,6 +100,7 @@ struct LevelDesc {
     WaterGridDesc water;
     FluidTankDesc fluid;
     DustDesc dust;  // the dusty props (docs/effects/dust.md)
+    ObjectivesDesc objectives;  // courses and targets (README, Playing)
 };
 
 }  // namespace sim

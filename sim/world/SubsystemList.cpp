@@ -2,6 +2,7 @@
 // subsystem here, where its inputs (the player, vehicles, objects) are already stepped.
 #include "sim/fluid/FluidTank.h"
 #include "sim/dust/DustField.h"
+#include "sim/objectives/Objectives.h"
 #include "sim/objects/ThrownObjects.h"
 #include "sim/player/CameraRig.h"
 #include "sim/player/Player.h"
@@ -44,6 +45,12 @@ void add_standard_subsystems(World& world) {
     }
     if (level.fluid.enabled)  // after the objects and the boat: it reads where they are this tick
         world.add(std::make_unique<FluidTank>(level.fluid, level.tank_spot, level.seed));
+    if (!level.objectives.empty()) {
+        // After the vehicles, objects and shots: it judges where they are this tick and
+        // changes nothing any other subsystem reads.
+        world.add(std::make_unique<Objectives>(level.objectives, glm::vec2(level.car_spawn.position.x, level.car_spawn.position.z),
+                                               glm::vec2(level.boat_spawn.position.x, level.boat_spawn.position.z)));
+    }
     world.add(std::make_unique<CameraRig>());
 }
 

@@ -1,0 +1,48 @@
+#include "sim/objectives/Objectives.h"
+
+#include "sim/objects/ThrownObjects.h"
+#include "sim/vehicle/Boat.h"
+#include "sim/vehicle/Car.h"
+#include "sim/weapon/Weapon.h"
+#include "sim/world/World.h"
+
+namespace sim {
+
+namespace {
+glm::vec2 ground_xz(glm::vec3 p) { return {p.x, p.z}; }
+}  // namespace
+
+Objectives::Objectives(const ObjectivesDesc& desc, glm::vec2 car_xz, glm::vec2 boat_xz)
+    : targets_(desc.targets), car_xz_(car_xz), boat_xz_(boat_xz) {
+    for (const CourseDesc& c : desc.courses) courses_.emplace_back(c);
+}
+
+const Course* Objectives::course_for(CourseVehicle vehicle) const {
+    for (const Course& c : courses_)
+        if (c.desc().vehicle == vehicle) return &c;
+    return nullptr;
+}
+
+void Objectives::step(StepContext& ctx) {
+    const uint64_t ticks = ctx.tick + 1;  // the world's tick count once this step is done
+    const glm::vec2 car = ground_xz(ctx.world.get<Car>().position());
+    const glm::vec2 boat = ground_xz(ctx.world.get<Boat>().position());
+    for (Course& c : courses_) {
+        if (c.desc().vehicle == CourseVehicle::Car) c.advance(car_xz_, car, ticks);
+        else c.advance(boat_xz_, boat, ticks);
+    }
+    car_xz_ = car;
+    boat_xz_ = boat;
+    targets_.hit_by(ctx.world.get<ThrownObjects>().objects(), ctx.world.get<Weapon>().shots(), ticks);
+}
+
+uint64_t Objectives::hash() const {
+    Hasher h;
+    for (const Course& c : courses_) c.hash(h);
+    targets_.hash(h);
+    h.vec(car_xz_);
+    h.vec(boat_xz_);
+    return h.value();
+}
+
+}  // namespace sim

@@ -1,0 +1,39 @@
+#pragma once
+// The game's goals (README, Playing): lap the level's courses, the car's on the roads
+// and the boat's on the water, against a lap timer, and hit its targets with stones
+// and shots. Reads where the vehicles, objects and shots are this tick; changes nothing
+// else in the world.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "sim/objectives/Course.h"
+#include "sim/objectives/ObjectiveDesc.h"
+#include "sim/objectives/Targets.h"
+#include "sim/world/Subsystem.h"
+
+namespace sim {
+
+class Objectives final : public Subsystem {
+public:
+    // The vehicles' positions on the ground at the start: the first move is from there.
+    Objectives(const ObjectivesDesc& desc, glm::vec2 car_xz, glm::vec2 boat_xz);
+
+    std::string_view name() const override { return "objectives"; }
+    void step(StepContext& ctx) override;
+    uint64_t hash() const override;
+
+    const std::vector<Course>& courses() const { return courses_; }
+    const Targets& targets() const { return targets_; }
+    // The first course for that vehicle, or none.
+    const Course* course_for(CourseVehicle vehicle) const;
+
+private:
+    std::vector<Course> courses_;
+    Targets targets_;
+    glm::vec2 car_xz_, boat_xz_;  // as of the last tick
+};
+
+}  // namespace sim
