@@ -1,0 +1,100 @@
+// The frame's anti-aliasing (FxaaPass, shaders/scene/fxaa.frag.glsl) through the real
+// tone map and FXAA passes on a headless context: a hard, slightly slanted edge in the
+// scene colour comes out with stair-steps without it and as a smooth ramp with it, and
+// flat colour away from edges is left exactly as it was.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "HeadlessTest.h"
+#include "RenderStage.h"
+#include "SimTestLevel.h"
+
+namespace {
+
+constexpr int W = 160, H = 96;
+constexpr float kDark = 0.03f, kBright = 0.8f;  // HDR radiance on either side of the edge
+
+class FxaaRenderTest : public HeadlessTest {
+protected:
+    // The scene colour holds a hard edge (every pixel either side, as a rasteriser
+    // draws it) along y = y0 + slope * x (GL rows), bright below it; the tone-mapped,
+    // optionally anti-aliased output's red channel, rows bottom-up.
+    std::vector<float> render_edge(bool antialias, float y0, float slope) {
+        RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = kTonemapPass | kFxaaPass});
+        std::vector<float> hdr(size_t(W * H * 4));
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const bool below = float(y) + 0.5f < y0 + slope * (float(x) + 0.5f);
+                const float v = below ? kBright : kDark;
+                float* px = &hdr[size_t((y * W + x) * 4)];
+                px[0] = px[1] = px[2] = v;
+                px[3] = 1.0f;
+            }
+        glTextureSubImage2D(stage.scene().targets.colour().id(), 0, 0, 0, W, H, GL_RGBA, GL_FLOAT, hdr.data());
+        stage.scene().quality.antialias = antialias;
+        const game::ImageRGBA8 image = stage.render(sim::CameraView{});
+        std::vector<float> red(size_t(W * H));
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) red[size_t(y * W + x)] = image.pixels[size_t(((H - 1 - y) * W + x) * 4)];
+        return red;
+    }
+};
+
+// The edge's height in each column: the bright share of the column, in pixels.
+std::vector<double> edge_heights(const std::vector<float>& red) {
+    float lo = 255.0f, hi = 0.0f;
+    for (float v : red) lo = std::min(lo, v), hi = std::max(hi, v);
+    std::vector<double> heights(W, 0.0);
+    for (int x = 0; x < W; ++x)
+        for (int y = 0; y < H; ++y) heights[size_t(x)] += (red[size_t(y * W + x)] - lo) / (hi - lo);
+    return heights;
+}
+
+// Stair-steps: the mean absolute second difference of the edge's height along it. A
+// straight ramp has none; a staircase of one-pixel steps has one per riser, each counted
+// twice (up, then level again).
+double stair_steps(const std::vector<double>& heights, int from, int to) {
+    double sum = 0.0;
+    for (int x = from + 1; x < to - 1; ++x) sum += std::abs(heights[size_t(x + 1)] - 2.0 * heights[size_t(x)] + heights[size_t(x - 1)]);
+    return sum / double(to - from - 2);
+}
+
+int intermediate_pixels(const std::vector<float>& red) {
+    float lo = 255.0f, hi = 0.0f;
+    for (float v : red) lo = std::min(lo, v), hi = std::max(hi, v);
+    int n = 0;
+    for (float v : red)
+        if (v > lo + 8.0f && v < hi - 8.0f) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST_F(FxaaRenderTest, ASlantedEdgeLosesItsStairSteps) {
+    // A rise of one pixel in 12: a staircase of long treads, what FXAA is made for.
+    const float slope = 1.0f / 12.0f, y0 = 40.0f;
+    const std::vector<float> off = render_edge(false, y0, slope);
+    const std::vector<float> on = render_edge(true, y0, slope);
+    EXPECT_EQ(intermediate_pixels(off), 0) << "without anti-aliasing the edge is hard";
+    EXPECT_GE(intermediate_pixels(on), W) << "with it, about a pixel or more of ramp a column";
+    // Away from the image's sides, where the walk along the edge runs out of image.
+    const double steps_off = stair_steps(edge_heights(off), 16, W - 16);
+    const double steps_on = stair_steps(edge_heights(on), 16, W - 16);
+    EXPECT_GT(steps_off, 0.12) << "one riser every 12 columns, counted twice";
+    EXPECT_LT(steps_on, 0.4 * steps_off) << "off " << steps_off << ", on " << steps_on;
+    // The ramp follows the true edge: each column's height within half a pixel of it.
+    const std::vector<double> heights = edge_heights(on);
+    for (int x = 16; x < W - 16; ++x)
+        EXPECT_NEAR(heights[size_t(x)], y0 + slope * (float(x) + 0.5f), 0.5) << "column " << x;
+}
+
+TEST_F(FxaaRenderTest, FlatColourIsLeftAsItWas) {
+    const std::vector<float> off = render_edge(false, 40.0f, 1.0f / 12.0f);
+    const std::vector<float> on = render_edge(true, 40.0f, 1.0f / 12.0f);
+    // Rows far from the edge (it spans rows 40 to 54).
+    for (int y : {0, 10, 25, 70, 85, 95})
+        for (int x = 0; x < W; ++x)
+            ASSERT_EQ(on[size_t(y * W + x)], off[size_t(y * W + x)]) << "pixel " << x << ", " << y;
+}
