@@ -12,10 +12,9 @@ uniform float u_threshold;    // the least contrast, relative to the brightest l
 uniform float u_threshold_min;  // and in absolute terms: dark noise is left alone
 layout(location = 0) out vec4 o_colour;
 
-// Luma of the gamma-encoded colour: what the eye sees as stairs.
-float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
-float luma_at(ivec2 p) { return luma(texelFetch(u_display, p, 0).rgb); }
-float luma_uv(vec2 uv) { return luma(textureLod(u_display, uv, 0.0).rgb); }
+// The gamma-encoded green stands in for luma (Lottes' cheaper option): one channel, so a
+// gather reads four neighbours at once. Edges between colours of equal green are missed.
+float luma_uv(vec2 uv) { return textureLod(u_display, uv, 0.0).g; }
 
 void main() {
     const ivec2 size = textureSize(u_display, 0);
@@ -23,12 +22,16 @@ void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const ivec2 last = size - 1;
     const vec3 centre = texelFetch(u_display, p, 0).rgb;
-    // Unfiltered fetches for the neighbourhood: cheaper than filtered ones on a CPU rasteriser.
-    float m = luma(centre);
-    float n = luma_at(min(p + ivec2(0, 1), last)), s = luma_at(max(p - ivec2(0, 1), ivec2(0)));
-    float e = luma_at(min(p + ivec2(1, 0), last)), w = luma_at(max(p - ivec2(1, 0), ivec2(0)));
-    float ne = luma_at(clamp(p + ivec2(1, 1), ivec2(0), last)), nw = luma_at(clamp(p + ivec2(-1, 1), ivec2(0), last));
-    float se = luma_at(clamp(p + ivec2(1, -1), ivec2(0), last)), sw = luma_at(clamp(p + ivec2(-1, -1), ivec2(0), last));
+    // The 3x3 neighbourhood in two gathers and two fetches: each gather reads the 2x2
+    // texels around a point a quarter texel off the centre (no rounding can pick
+    // another 2x2), the one up and right of it and, offset, the one down and left.
+    const vec2 gather_at = (vec2(p) + 0.75) * texel;
+    const vec4 up_right = textureGather(u_display, gather_at, 1);  // N, NE, E, M
+    const vec4 down_left = textureGatherOffset(u_display, gather_at, ivec2(-1, -1), 1);  // W, M, S, SW
+    float m = centre.g, n = up_right.x, ne = up_right.y, e = up_right.z;
+    float w = down_left.x, s = down_left.z, sw = down_left.w;
+    float nw = texelFetch(u_display, clamp(p + ivec2(-1, 1), ivec2(0), last), 0).g;
+    float se = texelFetch(u_display, clamp(p + ivec2(1, -1), ivec2(0), last), 0).g;
 
     float hi = max(max(max(n, s), max(e, w)), m), lo = min(min(min(n, s), min(e, w)), m);
     float range = hi - lo;
