@@ -1,7 +1,8 @@
 // The frame's anti-aliasing (FxaaPass, shaders/scene/fxaa.frag.glsl) through the real
-// tone map and FXAA passes on a headless context: a hard, slightly slanted edge in the
-// scene colour comes out with stair-steps without it and as a smooth ramp with it, and
-// flat colour away from edges is left exactly as it was.
+// tone map, FXAA and upscale passes on a headless context: a hard, slightly slanted edge
+// in the scene colour comes out with stair-steps without it and as a smooth ramp with
+// it, also through the upscale of a smaller scene, and flat colour away from edges is
+// left exactly as it was.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -22,18 +23,23 @@ protected:
     // The scene colour holds a hard edge (every pixel either side, as a rasteriser
     // draws it) along y = y0 + slope * x (GL rows), bright below it; the tone-mapped,
     // optionally anti-aliased output's red channel, rows bottom-up.
-    std::vector<float> render_edge(bool antialias, float y0, float slope) {
-        RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = kTonemapPass | kFxaaPass});
-        std::vector<float> hdr(size_t(W * H * 4));
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
+    // `scene_scale` below 1: the scene drawn smaller and upscaled to the output, the
+    // edge in the scene's pixels.
+    std::vector<float> render_edge(bool antialias, float y0, float slope, int scene_scale_div = 1) {
+        RenderStage stage(make_test_level(),
+                          {.width = W, .height = H, .passes = kTonemapPass | kFxaaPass | kUpscalePass});
+        const int w = W / scene_scale_div, h = H / scene_scale_div;
+        stage.scene().targets.resize(w, h);
+        std::vector<float> hdr(size_t(w * h * 4));
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
                 const bool below = float(y) + 0.5f < y0 + slope * (float(x) + 0.5f);
                 const float v = below ? kBright : kDark;
-                float* px = &hdr[size_t((y * W + x) * 4)];
+                float* px = &hdr[size_t((y * w + x) * 4)];
                 px[0] = px[1] = px[2] = v;
                 px[3] = 1.0f;
             }
-        glTextureSubImage2D(stage.scene().targets.colour().id(), 0, 0, 0, W, H, GL_RGBA, GL_FLOAT, hdr.data());
+        glTextureSubImage2D(stage.scene().targets.colour().id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, hdr.data());
         stage.scene().quality.antialias = antialias;
         const game::ImageRGBA8 image = stage.render(sim::CameraView{});
         std::vector<float> red(size_t(W * H));
@@ -104,4 +110,19 @@ TEST_F(FxaaRenderTest, FlatColourIsLeftAsItWas) {
     for (int y : {0, 10, 25, 70, 85, 95})
         for (int x = 0; x < W; ++x)
             ASSERT_EQ(on[size_t(y * W + x)], off[size_t(y * W + x)]) << "pixel " << x << ", " << y;
+}
+
+TEST_F(FxaaRenderTest, BelowScaleOneTheUpscaleShowsTheAntialiasedEdge) {
+    // The scene at half the output's size: the edge's stairs are two output pixels tall.
+    const float slope = 1.0f / 12.0f, y0 = 20.0f;
+    const std::vector<float> off = render_edge(false, y0, slope, 2);
+    const std::vector<float> on = render_edge(true, y0, slope, 2);
+    const std::vector<double> hard = edge_heights(off), smooth = edge_heights(on);
+    const int from = 32, to = W - 32;
+    // In output pixels: the true edge is twice as high.
+    const double error_off = mean_error(hard, 2.0f * y0, slope, from, to);
+    const double error_on = mean_error(smooth, 2.0f * y0, slope, from, to);
+    EXPECT_GT(tallest_step(hard, from, to), 1.5) << "two-pixel stairs without it";
+    EXPECT_LT(tallest_step(smooth, from, to), 0.8);
+    EXPECT_LT(error_on, 0.6 * error_off) << "off " << error_off << ", on " << error_on;
 }
