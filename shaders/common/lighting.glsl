@@ -43,21 +43,20 @@ vec3 line_light_irradiance(vec3 p, vec3 n) {
     return sum;
 }
 
-// The bias is all here, on the receiver (ShadowPass draws without a polygon offset): the
-// point is looked up lifted along its normal by as much as the filter's reach (2.5 map
-// texels) times the sine of the sun's angle to the normal, so that the surface's own
-// depth anywhere under the filter stays behind it however the surface slopes (normal
-// offset, a slope-scaled bias that cannot overshoot), plus 3 cm for rounding. A flat
-// receiver facing the sun is hardly lifted, so shadows stay on what casts them.
+// The bias is all on the receiver (ShadowPass draws without a polygon offset): the
+// point is looked up lifted along its normal by a quarter of a map texel plus one times
+// the sine of the sun's angle to the normal (normal offset: a slope-scaled bias that
+// cannot overshoot, so a lit slope under a low sun does not shadow itself), and its depth
+// brought 0.6 m towards the sun, which the car's smooth-shaded hood needs in the
+// driver's view (with less it streaks).
 float sun_visibility(vec3 world_pos, vec3 n) {
     vec2 size = vec2(textureSize(u_shadow_map, 0));
     float texel_m = 1.0 / (size.x * length(vec3(u_shadow_matrix[0][0], u_shadow_matrix[1][0], u_shadow_matrix[2][0])));
-    float depth_per_m = length(vec3(u_shadow_matrix[0][2], u_shadow_matrix[1][2], u_shadow_matrix[2][2]));
     float nl = clamp(dot(n, u_sun_dir), 0.0, 1.0);
-    vec4 s = u_shadow_matrix * vec4(world_pos + n * (2.5 * texel_m * sqrt(1.0 - nl * nl)), 1.0);
+    vec4 s = u_shadow_matrix * vec4(world_pos + n * (texel_m * (0.25 + 1.0 * sqrt(1.0 - nl * nl))), 1.0);
     vec3 p = s.xyz / s.w;
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
-    float depth = p.z - 0.03 * depth_per_m;
+    float depth = p.z - 0.0015;
 #if defined(SOFT_SHADOWS) && SOFT_SHADOWS == 0
     // A cheaper preset's: one bilinear comparison.
     return texture(u_shadow_map, vec3(p.xy, depth));
