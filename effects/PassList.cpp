@@ -6,6 +6,7 @@
 #include "effects/fluid/FluidPass.h"
 #include "effects/dust/DustPass.h"
 #include "effects/scene/EnvironmentPass.h"
+#include "effects/scene/FxaaPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
@@ -30,6 +31,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     passes.push_back(std::make_unique<EnergyPass>());  // additive, stops at the water's depth too
     passes.push_back(std::make_unique<RainPass>());  // refracts everything before it
     passes.push_back(std::make_unique<TonemapPass>());
+    passes.push_back(std::make_unique<FxaaPass>());  // at the scene's size: before the upscale, fewer pixels
     passes.push_back(std::make_unique<UpscalePass>());  // to the output's size; the HUD goes on after
     return passes;
 }

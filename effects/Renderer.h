@@ -31,6 +31,9 @@ public:
     // [kMinRenderScale, 1]) and is upscaled to it; the HUD stays at the output's.
     void set_render_scale(float scale);
     float render_scale() const { return render_scale_; }
+    // Anti-aliasing (FXAA) on or off; the preset's choice until the next set_quality.
+    void set_antialiasing(bool on) { resources_.quality.antialias = on; }
+    bool antialiasing() const { return resources_.quality.antialias; }
     static constexpr float kMinRenderScale = 0.25f;
 
     const SceneTargets& targets() const { return resources_.targets; }

@@ -20,6 +20,7 @@
 #include "effects/fluid/FluidPass.h"
 #include "effects/rain/RainPass.h"
 #include "effects/scene/EnvironmentPass.h"
+#include "effects/scene/FxaaPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
@@ -46,11 +47,12 @@ enum StagePass : unsigned {
     kRainPass = 1u << 10,
     kTonemapPass = 1u << 11,
     kUpscalePass = 1u << 12,
+    kFxaaPass = 1u << 13,
 };
 using StagePasses = unsigned;
 // The lit opaque scene: sky, shadows and sky occlusion for the terrain and props.
 constexpr StagePasses kLitScene = kEnvironmentPass | kShadowPass | kSkyOcclusionPass | kOpaquePass;
-constexpr StagePasses kEveryPass = (kUpscalePass << 1) - 1;
+constexpr StagePasses kEveryPass = (kFxaaPass << 1) - 1;
 
 // Which bit a pass of effects::make_pass_list() is: a pass the stage does not know
 // yet is an error, not a pass silently left out.
@@ -68,6 +70,7 @@ inline StagePass stage_pass_of(const effects::Pass& p) {
     if (dynamic_cast<const effects::RainPass*>(&p)) return kRainPass;
     if (dynamic_cast<const effects::TonemapPass*>(&p)) return kTonemapPass;
     if (dynamic_cast<const effects::UpscalePass*>(&p)) return kUpscalePass;
+    if (dynamic_cast<const effects::FxaaPass*>(&p)) return kFxaaPass;
     throw std::logic_error("RenderStage has no bit for the pass \"" + std::string(p.name()) + "\"");
 }
 
@@ -77,10 +80,12 @@ struct StageOptions {
     int environment_size = 32, shadow_map_size = 1024;  // the high preset's shadow map
 };
 
-// The high preset, with the stage's shadow map size.
+// The high preset, with the stage's shadow map size and without anti-aliasing: an
+// effect's test reads its own pixels (the FXAA test turns it on).
 inline effects::QualitySettings stage_quality(const StageOptions& options) {
     effects::QualitySettings q = effects::quality_settings(effects::Quality::High);
     q.shadow_map_size = options.shadow_map_size;
+    q.antialias = false;
     return q;
 }
 

@@ -112,7 +112,7 @@ TEST(KeyboardInput, AllBoundKeysGiveAQuantisedInput) {
 }
 
 TEST(KeyboardInput, ProgramKeysAreNotControls) {
-    for (int key : {GLFW_KEY_P, GLFW_KEY_F12, GLFW_KEY_F1, GLFW_KEY_F2, GLFW_KEY_ESCAPE}) {
+    for (int key : {GLFW_KEY_P, GLFW_KEY_F12, GLFW_KEY_F1, GLFW_KEY_F2, GLFW_KEY_F3, GLFW_KEY_ESCAPE}) {
         EXPECT_EQ(keys({key}).held, 0) << "GLFW key " << key;
         EXPECT_FALSE(game::control_for_key(key).has_value()) << "GLFW key " << key;
         EXPECT_TRUE(game::ui_action_for_key(key).has_value()) << "GLFW key " << key;
@@ -121,6 +121,7 @@ TEST(KeyboardInput, ProgramKeysAreNotControls) {
     EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F12), UiAction::Screenshot);
     EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F1), UiAction::ToggleDebugPanel);
     EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F2), UiAction::ToggleProfileTiming);
+    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F3), UiAction::ToggleAntialiasing);
     EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_ESCAPE), UiAction::Quit);
     for (const game::KeyBinding& b : game::key_bindings())
         for (int k : b.keys)

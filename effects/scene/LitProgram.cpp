@@ -8,9 +8,10 @@ LitProgram::LitProgram(std::string label, std::vector<std::string_view> files, s
     : label_(std::move(label)), files_(std::move(files)), defines_(std::move(defines)) {}
 
 const gl::Program& LitProgram::get(const QualitySettings& quality, bool line_lights) {
-    if (built_for_ != quality) {
+    std::vector<std::string> preset = shader_defines(quality, false);
+    if (built_for_ != preset) {
         variants_ = {};
-        built_for_ = quality;
+        built_for_ = std::move(preset);
     }
     std::optional<gl::Program>& v = variants_[line_lights ? 1 : 0];
     if (!v) {

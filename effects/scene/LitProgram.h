@@ -20,14 +20,15 @@ public:
     LitProgram(std::string label, std::vector<std::string_view> files, std::vector<std::string> defines = {});
 
     // The variant for this preset, with the line-light sum if `line_lights`; built on
-    // first use, and all variants dropped when the preset changes.
+    // first use, and all variants dropped when the preset's shader #defines change (not
+    // for what no shader compiles in, such as the anti-aliasing toggle).
     const gl::Program& get(const QualitySettings& quality, bool line_lights);
 
 private:
     std::string label_;
     std::vector<std::string_view> files_;
     std::vector<std::string> defines_;
-    std::optional<QualitySettings> built_for_;
+    std::optional<std::vector<std::string>> built_for_;  // the preset's defines
     std::array<std::optional<gl::Program>, 2> variants_;  // without, with line lights
 };
 

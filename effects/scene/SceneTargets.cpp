@@ -29,18 +29,32 @@ void SceneTargets::resize(int width, int height) {
     copy_fbo_.check_complete();
     display_ = gl::Texture{};
     display_fbo_ = gl::Framebuffer{};
+    antialiased_ = gl::Texture{};
+    antialiased_fbo_ = gl::Framebuffer{};
 }
 
 const gl::Framebuffer& SceneTargets::display_fbo() {
     if (display_.id() == 0) {
         display_ = gl::Texture::create_2d("scene.display", GL_RGBA8, width_, height_);
-        display_.set_filter(GL_NEAREST, GL_NEAREST);
+        display_.set_filter(GL_LINEAR, GL_LINEAR);
         display_.set_wrap(GL_CLAMP_TO_EDGE);
         display_fbo_ = gl::Framebuffer::create("scene.display");
         display_fbo_.attach_colour(0, display_);
         display_fbo_.check_complete();
     }
     return display_fbo_;
+}
+
+const gl::Framebuffer& SceneTargets::antialiased_fbo() {
+    if (antialiased_.id() == 0) {
+        antialiased_ = gl::Texture::create_2d("scene.antialiased", GL_RGBA8, width_, height_);
+        antialiased_.set_filter(GL_NEAREST, GL_NEAREST);
+        antialiased_.set_wrap(GL_CLAMP_TO_EDGE);
+        antialiased_fbo_ = gl::Framebuffer::create("scene.antialiased");
+        antialiased_fbo_.attach_colour(0, antialiased_);
+        antialiased_fbo_.check_complete();
+    }
+    return antialiased_fbo_;
 }
 
 void SceneTargets::copy_scene() {

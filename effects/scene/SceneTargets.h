@@ -1,7 +1,8 @@
 #pragma once
 // The frame's shared render targets: HDR colour, world normals and depth that the
 // opaque passes write, a copy of colour and depth that the water refracts (the fluid
-// and the rain keep copies of their own), and the tone-mapped display image.
+// and the rain keep copies of their own), the tone-mapped display image and its
+// anti-aliased copy.
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Texture.h"
 
@@ -22,14 +23,19 @@ public:
     const gl::Texture& colour_copy() const { return colour_copy_; }
     const gl::Texture& depth_copy() const { return depth_copy_; }
     // The tone-mapped frame at the scene's size, when the output is larger (render scale
-    // below 1): the upscale reads it. Made on first use.
+    // below 1) or anti-aliasing reads it; bilinear for the anti-aliasing's taps. Made on
+    // first use.
     const gl::Framebuffer& display_fbo();
     const gl::Texture& display() const { return display_; }
+    // The display image anti-aliased, when the upscale still has to bring it to the
+    // output. Made on first use.
+    const gl::Framebuffer& antialiased_fbo();
+    const gl::Texture& antialiased() const { return antialiased_; }
 
 private:
     int width_ = 0, height_ = 0;
-    gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_, display_;
-    gl::Framebuffer scene_fbo_, copy_fbo_, display_fbo_;
+    gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_, display_, antialiased_;
+    gl::Framebuffer scene_fbo_, copy_fbo_, display_fbo_, antialiased_fbo_;
 };
 
 }  // namespace effects

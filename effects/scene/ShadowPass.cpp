@@ -60,8 +60,10 @@ void ShadowPass::render(const FrameContext& frame) {
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.5f, 2.0f);
+    // No polygon offset: its slope term grows without bound on faces edge-on to the sun
+    // (the car's sides and windows), pushing them behind the road they shade, which drew
+    // the car's shadow as streaks; GL 4.5 has no clamp for it. The receiver biases
+    // instead, along its normal (sun_visibility in shaders/common/lighting.glsl).
     glDisable(GL_CULL_FACE);  // thin walls and open meshes must cast shadows too
     program_.set("u_view_proj", lighting.shadow_view_proj);
     const Frustum sun_view(lighting.shadow_view_proj);
@@ -77,7 +79,6 @@ void ShadowPass::render(const FrameContext& frame) {
                        size, size, 1);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     frame.scene.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::MovingShadowCasters, sun_view);
-    glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 }  // namespace effects

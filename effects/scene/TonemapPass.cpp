@@ -10,10 +10,10 @@ TonemapPass::TonemapPass()
 void TonemapPass::register_params(ParamRegistry& params) { params.add("tonemap", "exposure", &exposure_, 0.1f, 4.0f); }
 
 void TonemapPass::render(const FrameContext& frame) {
-    // Into the output at its own size; for a smaller scene, into the display image that
-    // the upscale pass brings to the output.
+    // Into the output at its own size; for a smaller scene or anti-aliasing, into the
+    // display image that the anti-aliasing or the upscale pass reads.
     SceneTargets& t = frame.scene.targets;
-    if (t.width() == frame.output.width && t.height() == frame.output.height) {
+    if (t.width() == frame.output.width && t.height() == frame.output.height && !frame.scene.quality.antialias) {
         glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
         glViewport(0, 0, frame.output.width, frame.output.height);
     } else {

@@ -4,7 +4,7 @@
 
 namespace effects {
 
-// HDR scene colour to the output: exposure, ACES filmic curve, sRGB.
+// HDR scene colour to the output (or the display image): exposure, ACES filmic curve, sRGB.
 class TonemapPass final : public Pass {
 public:
     TonemapPass();

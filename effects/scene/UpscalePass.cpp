@@ -23,7 +23,7 @@ void UpscalePass::render(const FrameContext& frame) {
     program_.set("u_display", 0);
     program_.set("u_edge", edge_);
     program_.set("u_sharpness", sharpness_);
-    t.display().bind(0);
+    (frame.scene.quality.antialias ? t.antialiased() : t.display()).bind(0);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

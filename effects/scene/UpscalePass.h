@@ -7,7 +7,8 @@ namespace effects {
 // The tone-mapped frame from the scene's size to the output's when the renderer draws
 // the scene smaller than the output (dynamic resolution, presets): an edge-adaptive
 // upscale with contrast-adaptive sharpening (shaders/scene/upscale.frag.glsl). Does
-// nothing at a render scale of 1, where the tone map writes the output itself.
+// nothing at a render scale of 1, where the tone map or the anti-aliasing writes the
+// output itself.
 class UpscalePass final : public Pass {
 public:
     UpscalePass();

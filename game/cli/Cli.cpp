@@ -66,7 +66,7 @@ options:
 keys (play): W/Up throttle, S/Down brake/reverse, A/D or Left/Right steer, E switch car/boat
   (near the pier), 1 throw heavy, 2 throw light, Space fire, C camera (chase/driver),
   V wipers, R/F rain up/down, P pause, F12 screenshot, F1 debug panel (quality, pass
-  times), F2 profile timing, Esc quit. Every press counts, however slow the frames.
+  times), F2 profile timing, F3 anti-aliasing on/off, Esc quit. Every press counts, however slow the frames.
 
 exit codes:
   0 success   1 a hash or frame check failed   2 bad command line

@@ -173,6 +173,8 @@ bool DebugUi::draw_debug_panel(effects::Renderer& renderer, QualityChoice& quali
     if (ImGui::Checkbox("profile timing (glFinish around every pass, F2)", &profile))
         renderer.set_timing(profile ? effects::gl::TimingMode::Profile : effects::gl::TimingMode::Sampled);
     if (!profile) ImGui::TextDisabled("one pass measured a frame, in turn");
+    bool antialias = renderer.antialiasing();
+    if (ImGui::Checkbox("anti-aliasing (FXAA, F3)", &antialias)) renderer.set_antialiasing(antialias);
 
     if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("pass");

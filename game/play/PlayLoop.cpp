@@ -164,6 +164,7 @@ void PlayLoop::on_key_press(int key, bool keyboard_drives) {
                                      ? effects::gl::TimingMode::Sampled
                                      : effects::gl::TimingMode::Profile);
             break;
+        case UiAction::ToggleAntialiasing: renderer_.set_antialiasing(!renderer_.antialiasing()); break;
         case UiAction::Quit: screen_.request_close(); break;
     }
 }

@@ -43,8 +43,17 @@ vec3 line_light_irradiance(vec3 p, vec3 n) {
     return sum;
 }
 
+// The bias is all on the receiver (ShadowPass draws without a polygon offset): the
+// point is looked up lifted along its normal by a quarter of a map texel plus one times
+// the sine of the sun's angle to the normal (normal offset: a slope-scaled bias that
+// cannot overshoot, so a lit slope under a low sun does not shadow itself), and its depth
+// brought 0.6 m towards the sun, which the car's smooth-shaded hood needs in the
+// driver's view (with less it streaks).
 float sun_visibility(vec3 world_pos, vec3 n) {
-    vec4 s = u_shadow_matrix * vec4(world_pos + n * 0.08, 1.0);
+    vec2 size = vec2(textureSize(u_shadow_map, 0));
+    float texel_m = 1.0 / (size.x * length(vec3(u_shadow_matrix[0][0], u_shadow_matrix[1][0], u_shadow_matrix[2][0])));
+    float nl = clamp(dot(n, u_sun_dir), 0.0, 1.0);
+    vec4 s = u_shadow_matrix * vec4(world_pos + n * (texel_m * (0.25 + 1.0 * sqrt(1.0 - nl * nl))), 1.0);
     vec3 p = s.xyz / s.w;
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(1.0)))) return 1.0;
     float depth = p.z - 0.0015;
@@ -57,7 +66,6 @@ float sun_visibility(vec3 world_pos, vec3 n) {
     // to floor(u)+2 by (1-f, 1, 1, f) / 3 (f the fraction past a texel centre); tap a
     // takes the first two in the ratio 1-f : 1, tap b the last two as 1 : f, each tap
     // placed so that its own bilinear weights are that ratio.
-    vec2 size = vec2(textureSize(u_shadow_map, 0));
     vec2 u = p.xy * size - 0.5;
     vec2 base = floor(u), f = u - base;
     vec2 wa = 2.0 - f, wb = 1.0 + f;                           // each tap's weight, of 3
