@@ -223,6 +223,96 @@ TEST(VehicleContact, SlidesAlongTheWorldBorder) {
     expect_never_trapped(world_border());
 }
 
+// The boat against the quay wall and a piling, the same way: run-up out at sea, with the
+// car parked on a deck close by so that the player can step across. Boats answer the
+// helm slower than cars answer the wheel: two seconds to get away.
+std::string sail_into(bool piling, float angle_deg, float speed) {
+    sim::LevelDesc l = open_level();
+    const glm::vec2 aim = piling ? glm::vec2(0.0f, 40.0f) : glm::vec2(0.0f, 0.0f);
+    sim::Aabb post{{-0.2f, -7.0f, 39.8f}, {0.2f, 2.0f, 40.2f}};
+    if (piling) l.solids.push_back(post);
+    auto distance = [&](glm::vec2 p) { return piling ? box_distance(post, p) : p.y; };
+    const glm::vec2 normal(0.0f, 1.0f);  // out to sea
+
+    // Run-up: how far the boat goes before it makes `speed`.
+    float run = 0.0f;
+    int run_ticks = 0;
+    {
+        sim::LevelDesc open = open_level();
+        open.boat_spawn = {{0.0f, 0.0f, 100.0f}, 0.0f};
+        open.car_spawn = {{0.0f, 1.0f, 108.0f}, 0.0f};
+        open.decks.push_back({{-5.0f, 0.6f, 104.0f}, {5.0f, 1.0f, 112.0f}});
+        sim::World w(open);
+        w.step(held({Control::SwitchVehicle}));
+        while (w.get<sim::Boat>().speed_mps() < speed && run_ticks < 30 * kOneSecond) {
+            w.step(held({Control::Throttle}));
+            ++run_ticks;
+        }
+        run = w.get<sim::Boat>().position().x;
+    }
+    float a = angle_deg * kPi / 180.0f;
+    glm::vec2 dir = -normal * std::sin(a) + glm::vec2(1.0f, 0.0f) * std::cos(a);
+    glm::vec2 right(-dir.y, dir.x);
+    const float lead_m = 8.0f;
+    glm::vec2 start = aim - dir * (run + lead_m) - right * (piling && angle_deg < 75.0f ? 1.0f : 0.0f);
+    l.boat_spawn = {{start.x, 0.0f, start.y}, heading_of(dir)};
+    glm::vec2 dock = start + right * 8.0f;  // beside the boat, away from where it goes
+    l.car_spawn = {{dock.x, 1.0f, dock.y}, 0.0f};
+    l.decks.push_back({{dock.x - 2.5f, 0.6f, dock.y - 4.0f}, {dock.x + 2.5f, 1.0f, dock.y + 4.0f}});
+    sim::World w(l);
+    const sim::Boat& boat = w.get<sim::Boat>();
+    w.step(held({Control::SwitchVehicle}));
+    if (w.get<sim::Player>().vehicle() != sim::Vehicle::Boat) return "could not board the boat";
+    auto where = [&] { return distance({boat.position().x, boat.position().z}); };
+    auto aground = [&]() -> std::string {
+        glm::vec3 f = boat.pose().forward_flat(), p = boat.position();
+        for (float along : {-0.45f, 0.45f}) {
+            glm::vec3 end = p + f * (along * boat.params().length_m);
+            if (w.terrain().ground_height({end.x, end.z}) > -boat.params().min_depth_m) return "aground";
+        }
+        for (float along : {-0.3f, 0.0f, 0.3f}) {  // the hull's collision circles
+            glm::vec3 c3 = p + f * (along * boat.params().length_m);
+            glm::vec2 c(c3.x, c3.z);
+            if (w.terrain().resolve_solids(c, 0.5f * boat.params().beam_m - 0.25f, p.y - 0.5f, p.y + 1.8f))
+                return "inside a piling";
+        }
+        return "";
+    };
+    float closest = where();
+    int approach = run_ticks + int(std::ceil((lead_m + 4.0f) / speed * kOneSecond));
+    for (int t = 0; t < approach + 2 * kOneSecond; ++t) {
+        w.step(t < approach && boat.speed_mps() >= speed ? TickInput{} : held({Control::Throttle}));
+        closest = std::min(closest, where());
+        if (std::string what = aground(); !what.empty()) return "while sailing in: " + what;
+    }
+    if (closest > 4.0f) return "never reached it (closest " + std::to_string(closest) + " m)";
+    // Head on it backs off; coming at an angle it has swung along and steers away.
+    TickInput in = held({Control::Brake});
+    if (angle_deg < 75.0f) {
+        glm::vec3 f = boat.pose().forward_flat();
+        bool left = f.z * normal.x - f.x * normal.y >= 0.0f;
+        in = held({Control::Throttle, left ? Control::SteerLeft : Control::SteerRight});
+    }
+    std::vector<float> d{where()};
+    for (int t = 1; t <= 2 * kOneSecond; ++t) {
+        w.step(in);
+        d.push_back(where());
+        if (std::string what = aground(); !what.empty()) return "while getting away: " + what;
+        glm::vec3 v = boat.velocity();
+        if (std::sqrt(v.x * v.x + v.z * v.z) > 0.5f && t >= 10 && d[size_t(t)] > d[size_t(t - 10)] + 0.05f) return "";
+    }
+    return "not free two seconds after getting away: speed " + std::to_string(boat.speed_mps()) + " m/s, " +
+           std::to_string(where()) + " m from it";
+}
+
+TEST(VehicleContact, BoatGetsAwayFromTheQuayAndAPiling) {
+    for (bool piling : {false, true})
+        for (float angle : {90.0f, 60.0f, 30.0f})
+            for (float speed : {3.0f, 8.0f})
+                EXPECT_EQ(sail_into(piling, angle, speed), "")
+                    << (piling ? "piling" : "quay") << " at " << angle << " degrees, " << speed << " m/s";
+}
+
 TEST(VehicleContact, SlidesAlongTheQuayInsteadOfStopping) {
     // A glancing blow keeps most of the speed along the edge.
     auto [run, ticks] = run_up(15.0f);

@@ -132,7 +132,7 @@ void Boat::touch_shore(const Terrain& terrain) {
     for (float along : {0.5f * p_.length_m, -0.5f * p_.length_m}) {
         glm::vec2 offset = glm::vec2(fwd.x, fwd.z) * along;
         glm::vec2 end = glm::vec2(pose_.position.x, pose_.position.z) + offset;
-        if (auto edge = edge_contact(end, -offset / std::fabs(along), deep)) {
+        if (auto edge = edge_contact(end, deep)) {
             pose_.position.x += edge->normal.x * edge->depth_m;
             pose_.position.z += edge->normal.y * edge->depth_m;
             touch(offset, edge->normal);

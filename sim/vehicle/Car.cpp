@@ -164,8 +164,7 @@ void Car::touch_edges(const Terrain& terrain) {
         for (float side : {-0.5f * kTrack_m - 0.1f, 0.5f * kTrack_m + 0.1f}) {
             glm::vec2 offset(fwd.x * along + right.x * side, fwd.z * along + right.z * side);
             glm::vec2 corner = glm::vec2(pose_.position.x, pose_.position.z) + offset;
-            float len = std::sqrt(offset.x * offset.x + offset.y * offset.y);
-            if (auto edge = edge_contact(corner, -offset / len, drivable)) {
+            if (auto edge = edge_contact(corner, drivable)) {
                 pose_.position.x += edge->normal.x * edge->depth_m;
                 pose_.position.z += edge->normal.y * edge->depth_m;
                 touch(offset, edge->normal);

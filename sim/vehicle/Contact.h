@@ -39,10 +39,11 @@ struct EdgeContact {
 // For a point of a vehicle that has left the ground it may be on: the shortest way
 // back, found on rings of growing radius around it (the mean direction of the first
 // ring's allowed points faces straight back across a straight edge), its length
-// refined by bisection. nullopt if the point is allowed. With nothing allowed within
-// the search radius the way back is `towards_body` (unit), a little at a time.
+// refined by bisection. nullopt if the point is allowed, or if nothing is allowed within
+// the search radius: only a vehicle set down there can be that far over, and it is left
+// where it is rather than thrown about.
 template <class Allowed>
-std::optional<EdgeContact> edge_contact(glm::vec2 point, glm::vec2 towards_body, const Allowed& allowed) {
+std::optional<EdgeContact> edge_contact(glm::vec2 point, const Allowed& allowed) {
     if (allowed(point)) return std::nullopt;
     constexpr int kDirections = 24;
     constexpr int kRings = 12;
@@ -61,7 +62,8 @@ std::optional<EdgeContact> edge_contact(glm::vec2 point, glm::vec2 towards_body,
         }
         if (found == 0) continue;
         float len = std::sqrt(sum.x * sum.x + sum.y * sum.y);
-        glm::vec2 n = len > 1e-4f ? sum / len : towards_body;
+        if (len < 1e-4f) continue;  // allowed on opposite sides alike: a thin strip
+        glm::vec2 n = sum / len;
         float lo = radius - kRingStep_m, hi = radius;
         if (!allowed(point + n * hi)) return EdgeContact{n, hi};
         for (int i = 0; i < 5; ++i) {
@@ -70,7 +72,7 @@ std::optional<EdgeContact> edge_contact(glm::vec2 point, glm::vec2 towards_body,
         }
         return EdgeContact{n, hi};
     }
-    return EdgeContact{towards_body, kRingStep_m};
+    return std::nullopt;
 }
 
 }  // namespace sim
