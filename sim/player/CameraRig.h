@@ -1,6 +1,7 @@
 #pragma once
 // Where the player looks from: a smoothed chase camera behind the vehicle (turned round
-// to look the way it goes while it reverses), or the driver's seat. Sim state so that replays reproduce every frame exactly.
+// to look the way it goes while it reverses), or the driver's seat. Sim state so that
+// replays reproduce every frame exactly.
 #include <glm/vec3.hpp>
 
 #include "sim/world/Subsystem.h"
