@@ -109,8 +109,8 @@ void Car::substep(const DriveInput& in, bool reverse, const Terrain& terrain, fl
     float brake_dv = brake / p_.mass_kg * h;
     u_ = std::fabs(u_) <= brake_dv ? 0.0f : u_ - brake_dv * (u_ > 0.0f ? 1.0f : -1.0f);
 
-    // Instead, blend into rolling without slip, where the rear axle has no sideways
-    // speed (v = b r) and r = u tan(steer) / L. While scraping along something the turn
+    // Slow, the car rolls without slip instead: blend into it, where the rear axle has no
+    // sideways speed (v = b r) and r = u tan(steer) / L. While scraping along something the turn
     // the contact gave the car dies away over a moment instead, so that a car nosed into
     // a wall at an angle pivots along it rather than stalling.
     k = std::clamp((std::fabs(u_) - 1.0f) / 2.0f, 0.0f, 1.0f);
