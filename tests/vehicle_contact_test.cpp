@@ -181,15 +181,19 @@ std::string drive_into(const Obstacle& o, float angle_deg, float speed, Escape e
         if (++braking > 5 * kOneSecond) return "still rolling forwards after 5 s of brake";
         if (std::string where = trapped_where(w); !where.empty()) return "while braking: " + where;
     }
+    // Free: moving, and either getting away from it or already well past it (a post is
+    // passed close by before the distance grows).
     std::vector<float> d{distance()};
+    const glm::vec3 from = car.position();
     for (int t = 1; t <= kOneSecond; ++t) {
         w.step(in);
         d.push_back(distance());
         if (std::string where = trapped_where(w); !where.empty()) return "while escaping: " + where;
-        glm::vec3 v = car.velocity();
+        glm::vec3 v = car.velocity(), moved = car.position() - from;
         bool moving = std::sqrt(v.x * v.x + v.z * v.z) > 0.5f;
         bool leaving = t >= 10 && d[size_t(t)] > d[size_t(t - 10)] + 0.05f;
-        if (moving && leaving) return "";
+        bool past = std::sqrt(moved.x * moved.x + moved.z * moved.z) > 1.5f;
+        if (moving && (leaving || past)) return "";
     }
     return "not free a second after escaping: speed " + std::to_string(car.speed_mps()) + " m/s, " +
            std::to_string(distance()) + " m from it";

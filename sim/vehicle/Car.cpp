@@ -95,13 +95,17 @@ void Car::substep(const DriveInput& in, bool reverse, const Terrain& terrain, fl
     // at least 1 m/s): the tyres' side forces fade out, so that a car at rest with the
     // wheel on full lock does not brake itself and can drive or reverse away.
     float k = std::clamp((std::fabs(u_) - 1.0f) / 2.0f, 0.0f, 1.0f);
-    float fy_f = -k * cap_f * det::tanh(p_.cornering_stiffness_npr * alpha_f / cap_f);
+    float fy_f_full = -cap_f * det::tanh(p_.cornering_stiffness_npr * alpha_f / cap_f);
+    float fy_f = k * fy_f_full;
     float fy_r = -k * cap_r * det::tanh(p_.cornering_stiffness_npr * alpha_r / cap_r);
 
     float cs = det::cos(steer_), sn = det::sin(steer_);
     float du = (fx - fy_f * sn) / p_.mass_kg + v_ * r_;
     float dv = (fy_f * cs + fy_r) / p_.mass_kg - u_ * r_;
     float dr = (a * fy_f * cs - b * fy_r) / p_.yaw_inertia_kgm2;
+    // Pressed against something, the steered front wheels still scrub the nose round
+    // the way they point: how a car nosed into a post or a wall turns off it.
+    if (scraping_s_ > 0.0f) dr += (1.0f - k) * a * fy_f_full * cs / p_.yaw_inertia_kgm2;
     u_ += du * h;
     v_ += dv * h;
     r_ += dr * h;
