@@ -217,6 +217,43 @@ TEST(Player, CyclesCameraWipersAndRain) {
     EXPECT_EQ(h.get<sim::Player>().view(), sim::ViewMode::Driver);
 }
 
+// Where the chase camera's eye is along the car: positive ahead of its nose.
+float eye_ahead_of_car(const sim::World& w) {
+    const sim::Car& car = w.get<sim::Car>();
+    glm::vec3 d = w.get<sim::CameraRig>().view().eye - car.position();
+    glm::vec3 f = car.pose().forward_flat();
+    return d.x * f.x + d.z * f.z;
+}
+
+TEST(CameraRig, TurnsRoundWhileReversingAndBackWhenDrivingOn) {
+    sim::LevelDesc l = make_test_level();
+    l.solids.clear();
+    sim::World w(l);
+    run(w, 60, TickInput{});
+    EXPECT_LT(eye_ahead_of_car(w), -5.0f);  // behind the car
+    // A short reverse, as when backing off a wall, keeps the camera where it is.
+    glm::vec3 last_eye = w.get<sim::CameraRig>().view().eye;
+    float most_moved = 0.0f;
+    auto step = [&](TickInput in) {
+        w.step(in);
+        glm::vec3 eye = w.get<sim::CameraRig>().view().eye, d = eye - last_eye;
+        most_moved = std::max(most_moved, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
+        last_eye = eye;
+    };
+    for (int t = 0; t < 45; ++t) step(held({Control::Brake}));
+    ASSERT_LT(w.get<sim::Car>().speed_mps(), -0.5f);
+    EXPECT_LT(eye_ahead_of_car(w), -5.0f);
+    // Reversing on, it swings round to look the way the car goes...
+    for (int t = 0; t < 180; ++t) step(held({Control::Brake}));
+    EXPECT_GT(eye_ahead_of_car(w), 5.0f);
+    // ... and back behind once the car drives forwards again.
+    for (int t = 0; t < 240; ++t) step(held({Control::Throttle}));
+    ASSERT_GT(w.get<sim::Car>().speed_mps(), 0.5f);
+    EXPECT_LT(eye_ahead_of_car(w), -5.0f);
+    // Smoothly: never a jump (the car itself moves at most ~0.25 m a tick here).
+    EXPECT_LT(most_moved, 0.6f);
+}
+
 TEST(ThrownObjects, SubmergedVolumeOfASphere) {
     const float r = 0.5f, full = 4.0f / 3.0f * 3.14159265f * r * r * r;
     EXPECT_FLOAT_EQ(sim::submerged_sphere_volume(r, -1.0f), 0.0f);

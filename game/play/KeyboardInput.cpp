@@ -22,6 +22,7 @@ constexpr KeyBinding kBindings[] = {
     {Control::Wipers, {GLFW_KEY_V, 0}},
     {Control::RainUp, {GLFW_KEY_R, 0}},
     {Control::RainDown, {GLFW_KEY_F, 0}},
+    {Control::Reset, {GLFW_KEY_BACKSPACE, 0}},
 };
 
 }  // namespace

@@ -21,20 +21,22 @@ enum class Control : uint16_t {
     Wipers = 1u << 9,
     RainUp = 1u << 10,
     RainDown = 1u << 11,
+    Reset = 1u << 12,
 };
-inline constexpr int kControlCount = 12;
+inline constexpr int kControlCount = 13;
 inline constexpr uint16_t kAllControls = (1u << kControlCount) - 1;
 // The controls that act once on their rising edge; the rest (throttle, brake,
 // steering) act for as long as they are held.
 inline constexpr uint16_t kOneShotControls =
     uint16_t(Control::SwitchVehicle) | uint16_t(Control::ThrowHeavy) | uint16_t(Control::ThrowLight) |
     uint16_t(Control::Fire) | uint16_t(Control::Camera) | uint16_t(Control::Wipers) |
-    uint16_t(Control::RainUp) | uint16_t(Control::RainDown);
+    uint16_t(Control::RainUp) | uint16_t(Control::RainDown) | uint16_t(Control::Reset);
 
 // Script / CLI names, index i names bit i.
 inline constexpr std::string_view kControlNames[kControlCount] = {
     "throttle", "brake",      "steer_left", "steer_right", "switch_vehicle", "throw_heavy",
-    "throw_light", "fire",    "camera",     "wipers",      "rain_up",        "rain_down"};
+    "throw_light", "fire",    "camera",     "wipers",      "rain_up",        "rain_down",
+    "reset"};
 
 std::optional<Control> control_from_name(std::string_view name);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
@@ -12,6 +13,10 @@
 
 namespace sim {
 
+namespace {
+constexpr float kMovingBackwards_mps = 0.5f;
+}  // namespace
+
 CameraRig::CameraRig(CameraRigParams params) : p_(params) {}
 
 void CameraRig::step(StepContext& ctx) {
@@ -19,7 +24,19 @@ void CameraRig::step(StepContext& ctx) {
     bool in_car = player.vehicle() == Vehicle::Car;
     const Pose& pose = in_car ? ctx.world.get<Car>().pose() : ctx.world.get<Boat>().pose();
     float speed = in_car ? ctx.world.get<Car>().speed_mps() : ctx.world.get<Boat>().speed_mps();
-    glm::vec3 fwd = pose.forward_flat();
+
+    // Reversing for a moment swings the chase camera round to look the way the vehicle
+    // goes; driving forwards again swings it back.
+    if (speed < -kMovingBackwards_mps) reversing_s_ += ctx.dt;
+    else reversing_s_ = 0.0f;
+    if (reversing_s_ > p_.reverse_look_delay_s) looking_back_ = true;
+    if (speed > kMovingBackwards_mps) looking_back_ = false;
+    swing_ = std::clamp(swing_ + (looking_back_ ? 1.0f : -1.0f) * ctx.dt / p_.reverse_swing_s, 0.0f, 1.0f);
+    // Eased in and out, round the vehicle's right side.
+    float angle = 3.14159265f * swing_ * swing_ * (3.0f - 2.0f * swing_);
+    float sa, ca;
+    det::sincos(angle, sa, ca);
+    glm::vec3 fwd = pose.forward_flat() * ca + pose.right_flat() * sa;
 
     float dist = p_.chase_distance_m + p_.speed_pullback * std::fabs(speed);
     glm::vec3 want_eye = pose.position - fwd * dist + glm::vec3(0.0f, p_.chase_height_m, 0.0f);
@@ -62,6 +79,9 @@ uint64_t CameraRig::hash() const {
     h.f32(view_.fov_y_deg);
     h.vec(chase_eye_);
     h.vec(chase_target_);
+    h.f32(reversing_s_);
+    h.f32(swing_);
+    h.u32(looking_back_ ? 1u : 0u);
     return h.value();
 }
 

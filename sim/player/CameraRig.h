@@ -1,6 +1,7 @@
 #pragma once
-// Where the player looks from: a smoothed chase camera behind the vehicle, or the
-// driver's seat. Sim state so that replays reproduce every frame exactly.
+// Where the player looks from: a smoothed chase camera behind the vehicle (turned round
+// to look the way it goes while it reverses), or the driver's seat. Sim state so that
+// replays reproduce every frame exactly.
 #include <glm/vec3.hpp>
 
 #include "sim/world/Subsystem.h"
@@ -20,6 +21,8 @@ struct CameraRigParams {
     float chase_look_ahead_m = 4.0f;   // look at a point ahead of the vehicle
     float speed_pullback = 0.12f;      // extra distance per m/s
     float follow_rate = 0.08f;         // fraction of the gap closed per tick
+    float reverse_look_delay_s = 0.7f;  // reversing this long turns the chase camera round
+    float reverse_swing_s = 1.2f;       // the half turn takes this long
     float chase_fov_deg = 60.0f;
     float driver_fov_deg = 70.0f;
 };
@@ -39,6 +42,10 @@ private:
     CameraView view_;
     glm::vec3 chase_eye_{0.0f}, chase_target_{0.0f};
     bool initialised_ = false;
+    float reversing_s_ = 0.0f;  // how long the vehicle has been moving backwards
+    bool looking_back_ = false;
+    float swing_ = 0.0f;        // 0 behind the nose .. 1 behind the tail, looking where it reverses
+
 };
 
 }  // namespace sim

@@ -31,6 +31,7 @@ void Player::step(StepContext& ctx) {
     throw_heavy_ = ctx.pressed(Control::ThrowHeavy);
     throw_light_ = ctx.pressed(Control::ThrowLight);
     fire_ = ctx.pressed(Control::Fire);
+    reset_ = ctx.pressed(Control::Reset);
 }
 
 DriveInput Player::drive_input(Vehicle v) const {
@@ -45,7 +46,7 @@ uint64_t Player::hash() const {
     h.f32(controls_.throttle);
     h.f32(controls_.brake);
     h.f32(controls_.steer);
-    h.u32(uint32_t(throw_heavy_) | uint32_t(throw_light_) << 1 | uint32_t(fire_) << 2);
+    h.u32(uint32_t(throw_heavy_) | uint32_t(throw_light_) << 1 | uint32_t(fire_) << 2 | uint32_t(reset_) << 3);
     return h.value();
 }
 

@@ -39,6 +39,8 @@ public:
     bool throws_heavy() const { return throw_heavy_; }
     bool throws_light() const { return throw_light_; }
     bool fires() const { return fire_; }
+    // Put the player's vehicle back upright and stopped on a road or open water.
+    bool resets() const { return reset_; }
 
 private:
     Vehicle vehicle_ = Vehicle::Car;
@@ -46,7 +48,7 @@ private:
     WiperMode wipers_ = WiperMode::Off;
     float rain_intensity_ = 0.0f;
     DriveInput controls_;
-    bool throw_heavy_ = false, throw_light_ = false, fire_ = false;
+    bool throw_heavy_ = false, throw_light_ = false, fire_ = false, reset_ = false;
 };
 
 }  // namespace sim

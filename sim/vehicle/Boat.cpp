@@ -5,6 +5,7 @@
 
 #include "sim/core/DetMath.h"
 #include "sim/core/Hash.h"
+#include "sim/vehicle/Contact.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/World.h"
 
@@ -15,6 +16,9 @@ constexpr float kGravity = 9.81f;
 constexpr float kWaterDensity = 1000.0f;
 constexpr int kSubsteps = 4;
 constexpr float kTopSpeedForPlaning_mps = 12.0f;
+constexpr ContactMaterial kFender{0.3f, 0.2f};  // hull against stone and timber
+constexpr float kResetRingStep_m = 2.0f;
+constexpr int kResetRings = 60;
 }  // namespace
 
 Boat::Boat(const Spawn& spawn, BoatParams params) : p_(params) {
@@ -33,7 +37,9 @@ glm::vec2 Boat::hull_point(int i) const {
 glm::vec3 Boat::velocity() const { return u_ * pose_.forward_flat() - v_ * pose_.right_flat(); }
 
 void Boat::step(StepContext& ctx) {
-    DriveInput in = ctx.world.get<Player>().drive_input(Vehicle::Boat);
+    const Player& player = ctx.world.get<Player>();
+    if (player.resets() && player.vehicle() == Vehicle::Boat) reset(ctx.world.terrain());
+    DriveInput in = player.drive_input(Vehicle::Boat);
     float h = ctx.dt / kSubsteps;
     for (int i = 0; i < kSubsteps; ++i) substep(in, ctx.world, h);
 }
@@ -83,7 +89,6 @@ void Boat::substep(const DriveInput& in, const World& world, float h) {
     // Turning heels the boat outwards a little.
     roll_rate_ += -0.02f * u_ * r_ * h;
 
-    Pose before = pose_;
     pose_.position.y += heave_rate_ * h;
     pose_.pitch_rad += pitch_rate_ * h;
     pose_.roll_rad += roll_rate_ * h;
@@ -92,33 +97,103 @@ void Boat::substep(const DriveInput& in, const World& world, float h) {
     pose_.position.x += vel.x * h;
     pose_.position.z += vel.z * h;
 
-    // Pilings and the pier: push out, lose the speed into them.
-    fwd = pose_.forward_flat();
-    float hull_radius = 0.5f * p_.beam_m;
+    for (int pass = 0; pass < 2; ++pass) {
+        touch_solids(terrain);
+        touch_shore(terrain);
+    }
+}
+
+void Boat::touch_solids(const Terrain& terrain) {
+    // Pilings and the pier: three circles along the hull pushed out of them.
+    const glm::vec3 fwd = pose_.forward_flat();
+    const float hull_radius = 0.5f * p_.beam_m;
     for (float along : {0.3f * p_.length_m, 0.0f, -0.3f * p_.length_m}) {
         glm::vec2 c(pose_.position.x + fwd.x * along, pose_.position.z + fwd.z * along);
-        if (auto push = terrain.resolve_solids(c, hull_radius, pose_.position.y - 0.5f, pose_.position.y + 1.8f)) {
-            pose_.position.x += push->x;
-            pose_.position.z += push->y;
-            u_ *= 0.5f;
-            v_ = 0.0f;
-        }
+        auto push = terrain.resolve_solids(c, hull_radius, pose_.position.y - 0.5f, pose_.position.y + 1.8f);
+        if (!push) continue;
+        float depth = std::sqrt(push->x * push->x + push->y * push->y);
+        if (depth < 1e-6f) continue;
+        glm::vec2 n = *push / depth;
+        pose_.position.x += push->x;
+        pose_.position.z += push->y;
+        touch(glm::vec2(fwd.x, fwd.z) * along - n * hull_radius, n);
     }
-    // Shallows and the world's edge: run aground softly.
+}
+
+bool Boat::navigable(const Terrain& terrain, glm::vec2 xz) const {
+    return terrain.inside_world(xz) && terrain.ground_height(xz) <= terrain.level().sea_level_m - p_.min_depth_m;
+}
+
+void Boat::touch_shore(const Terrain& terrain) {
+    // Shallows and the world's edge: bow and stern are put back into deep enough water
+    // and the boat slides along, as off a fender.
+    const glm::vec3 fwd = pose_.forward_flat();
+    auto deep = [&](glm::vec2 xz) { return navigable(terrain, xz); };
     for (float along : {0.5f * p_.length_m, -0.5f * p_.length_m}) {
-        glm::vec2 c(pose_.position.x + fwd.x * along, pose_.position.z + fwd.z * along);
-        bool aground = !terrain.inside_world(c) ||
-                       terrain.ground_height(c) > terrain.level().sea_level_m - p_.min_depth_m;
-        if (aground) {
-            pose_.position.x = before.position.x;
-            pose_.position.z = before.position.z;
-            pose_.heading_rad = before.heading_rad;
-            u_ *= -0.2f;
-            v_ = 0.0f;
-            r_ = 0.0f;
-            break;
+        glm::vec2 offset = glm::vec2(fwd.x, fwd.z) * along;
+        glm::vec2 end = glm::vec2(pose_.position.x, pose_.position.z) + offset;
+        if (auto edge = edge_contact(end, deep)) {
+            pose_.position.x += edge->normal.x * edge->depth_m;
+            pose_.position.z += edge->normal.y * edge->depth_m;
+            touch(offset, edge->normal);
         }
     }
+}
+
+void Boat::touch(glm::vec2 offset, glm::vec2 normal) {
+    const glm::vec3 fwd = pose_.forward_flat(), left = -pose_.right_flat();
+    glm::vec3 w = velocity();
+    const float yaw_inertia = p_.mass_kg * (p_.length_m * p_.length_m + p_.beam_m * p_.beam_m) / 12.0f;
+    PlanarBody body{{w.x, w.z}, r_, p_.mass_kg, yaw_inertia};
+    sim::touch(body, offset, normal, kFender);
+    u_ = body.velocity.x * fwd.x + body.velocity.y * fwd.z;
+    v_ = body.velocity.x * left.x + body.velocity.y * left.z;
+    r_ = body.yaw_rate;
+}
+
+bool Boat::fits(const Terrain& terrain, glm::vec2 xz, float heading_rad) const {
+    Pose at;
+    at.heading_rad = heading_rad;
+    glm::vec3 fwd = at.forward_flat(), right = at.right_flat();
+    float sea = terrain.level().sea_level_m;
+    for (float along : {-0.6f, 0.0f, 0.6f})
+        for (float side : {-0.6f, 0.0f, 0.6f}) {
+            glm::vec2 c = xz + glm::vec2(fwd.x, fwd.z) * (along * p_.length_m) + glm::vec2(right.x, right.z) * (side * p_.beam_m);
+            if (!navigable(terrain, c)) return false;
+        }
+    for (float along : {0.3f * p_.length_m, 0.0f, -0.3f * p_.length_m}) {
+        glm::vec2 c = xz + glm::vec2(fwd.x, fwd.z) * along;
+        if (terrain.resolve_solids(c, 0.5f * p_.beam_m + 0.5f, sea - 0.5f, sea + 1.8f)) return false;
+    }
+    return true;
+}
+
+void Boat::reset(const Terrain& terrain) {
+    // The nearest open water the hull fits in with room to spare, on rings of growing
+    // radius around the boat, keeping its heading; failing that, the spawn point.
+    const LevelDesc& level = terrain.level();
+    glm::vec2 here(pose_.position.x, pose_.position.z);
+    glm::vec2 spot(level.boat_spawn.position.x, level.boat_spawn.position.z);
+    float heading = pose_.heading_rad;
+    bool found = fits(terrain, here, heading);
+    if (found) spot = here;
+    for (int ring = 1; ring <= kResetRings && !found; ++ring) {
+        const int directions = 8 * ring;
+        for (int k = 0; k < directions && !found; ++k) {
+            float s, c;
+            det::sincos(6.2831853f * float(k) / float(directions), s, c);
+            glm::vec2 at = here + glm::vec2(c, s) * (kResetRingStep_m * float(ring));
+            if (fits(terrain, at, heading)) {
+                spot = at;
+                found = true;
+            }
+        }
+    }
+    if (!found) heading = level.boat_spawn.heading_rad;
+    pose_ = Pose{};
+    pose_.position = {spot.x, level.sea_level_m, spot.y};
+    pose_.heading_rad = heading;
+    u_ = v_ = r_ = heave_rate_ = pitch_rate_ = roll_rate_ = 0.0f;
 }
 
 uint64_t Boat::hash() const {

@@ -45,6 +45,14 @@ public:
 
 private:
     void substep(const DriveInput& in, const class World& world, float h);
+    void touch_solids(const class Terrain& terrain);
+    void touch_shore(const class Terrain& terrain);
+    // A touch at `offset` from the centre (ground plane) against an obstacle facing `normal`.
+    void touch(glm::vec2 offset, glm::vec2 normal);
+    bool navigable(const class Terrain& terrain, glm::vec2 xz) const;
+    // Backspace: upright and stopped on the nearest open water.
+    void reset(const class Terrain& terrain);
+    bool fits(const class Terrain& terrain, glm::vec2 xz, float heading_rad) const;
 
     BoatParams p_;
     Pose pose_;

@@ -48,6 +48,13 @@ public:
 
 private:
     void substep(const DriveInput& in, bool reverse, const class Terrain& terrain, float h);
+    // Backspace: upright and stopped on the nearest road, along it.
+    void reset(const class Terrain& terrain);
+    bool fits(const class Terrain& terrain, glm::vec2 xz, float heading_rad) const;
+    void touch_solids(const class Terrain& terrain);
+    void touch_edges(const class Terrain& terrain);
+    // A touch at `offset` from the centre (ground plane) against an obstacle facing `normal`.
+    void touch(glm::vec2 offset, glm::vec2 normal);
     void follow_ground(const class Terrain& terrain);
 
     CarParams p_;
@@ -57,6 +64,7 @@ private:
     float r_ = 0.0f;      // yaw rate, rad/s
     float steer_ = 0.0f;  // front wheel angle, rad (positive turns left)
     float wheel_spin_ = 0.0f;
+    float scraping_s_ = 0.0f;  // time left of the last contact's hold on the tyres
     glm::vec2 accel_{0.0f};
 };
 
