@@ -207,6 +207,23 @@ TEST_F(Cli, BrokenLevelsAreRefused) {
     }
 }
 
+TEST_F(Cli, AMistypedLevelNameSuggestsTheNearestAndListsTheLevels) {
+    write_file(dir_ / "s.script", "0 hold\n10 end\n");
+    const std::string script = (dir_ / "s.script").string(), out = (dir_ / "x.replay").string();
+    CommandResult typo = run("record --level harbor --script " + script + " --out " + out);
+    EXPECT_EQ(typo.code, 3) << typo.output;
+    EXPECT_NE(typo.output.find("no level named 'harbor'"), std::string::npos) << typo.output;
+    EXPECT_NE(typo.output.find("did you mean 'harbour'?"), std::string::npos) << typo.output;
+    EXPECT_NE(typo.output.find("levels: harbour"), std::string::npos) << typo.output;
+    EXPECT_EQ(std::count(typo.output.begin(), typo.output.end(), '\n'), 1) << "one message: " << typo.output;
+    // Nothing near: the list alone.
+    CommandResult far = run("record --level lighthouse --script " + script + " --out " + out);
+    EXPECT_EQ(far.code, 3) << far.output;
+    EXPECT_EQ(far.output.find("did you mean"), std::string::npos) << far.output;
+    EXPECT_NE(far.output.find("levels: harbour"), std::string::npos) << far.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(Cli, ALevelWithAnUnstableWaveGridIsRefused) {
     fs::path level = harbour_variant("harbour", "\"wave_speed_mps\": 2.5", "\"wave_speed_mps\": 50");
     write_file(dir_ / "s.script", "0 hold\n10 end\n");
@@ -313,10 +330,21 @@ TEST_F(Cli, ARecordingKilledMidwayReplaysUpToItsLastWholeChunk) {
 
 TEST_F(Cli, FrameChecksCatchAWrongGoldenAndNameTheEvidence) {
     fs::path rep = record("level harbour\nframes 64x36\ncheckpoints 30\n0 hold throttle\n40 end\n");
-    // No golden yet: the check fails and says how to make one.
+    // No golden yet: the hashes pass, and the check says the frame went unchecked and
+    // how to make its golden ...
     CommandResult none = run("replay " + rep.string() + " --headless --check --out " + (dir_ / "out").string());
-    EXPECT_EQ(none.code, 1) << none.output;
+    EXPECT_EQ(none.code, 0) << none.output;
+    EXPECT_NE(none.output.find("no golden"), std::string::npos) << none.output;
+    EXPECT_NE(none.output.find("frame not checked"), std::string::npos) << none.output;
     EXPECT_NE(none.output.find("--update-goldens"), std::string::npos) << none.output;
+    EXPECT_NE(none.output.find("check passed (1 of 1 checkpoints have no golden"), std::string::npos) << none.output;
+    EXPECT_EQ(none.output.find("FAILED"), std::string::npos) << none.output;
+    // ... unless goldens are required, as for the bundled replays.
+    CommandResult required =
+        run("replay " + rep.string() + " --headless --check --require-goldens --out " + (dir_ / "out").string());
+    EXPECT_EQ(required.code, 1) << required.output;
+    EXPECT_NE(required.output.find("no golden"), std::string::npos) << required.output;
+    EXPECT_NE(required.output.find("FAILED"), std::string::npos) << required.output;
     CommandResult update = run("replay " + rep.string() + " --headless --update-goldens");
     ASSERT_EQ(update.code, 0) << update.output;
     fs::path golden = dir_ / "r" / "tick_000030.png";
