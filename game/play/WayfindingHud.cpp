@@ -96,11 +96,15 @@ void draw_wayfinding(SwitchPrompt prompt, const VehicleMarker& marker) {
     if (!marker.shown) return;
     const glm::vec2 tip = marker.position + glm::vec2(viewport->Pos.x, viewport->Pos.y);
     const glm::vec2 dir = marker.direction, side(-dir.y, dir.x);
-    constexpr float kLength = 22.0f, kHalfWidth = 12.0f;
+    // A notched arrowhead, long for its width, so that its point reads at a glance.
+    constexpr float kLength = 30.0f, kHalfWidth = 13.0f, kNotch = 10.0f;
     const glm::vec2 base = tip - dir * kLength;
     const auto im = [](glm::vec2 v) { return ImVec2(v.x, v.y); };
-    draw->AddTriangleFilled(im(tip), im(base + side * kHalfWidth), im(base - side * kHalfWidth), ink);
-    draw->AddTriangle(im(tip), im(base + side * kHalfWidth), im(base - side * kHalfWidth), shadow, 2.0f);
+    const ImVec2 head[4] = {im(tip), im(base + side * kHalfWidth), im(base + dir * kNotch),
+                            im(base - side * kHalfWidth)};
+    draw->AddTriangleFilled(head[0], head[1], head[2], ink);
+    draw->AddTriangleFilled(head[0], head[2], head[3], ink);
+    draw->AddPolyline(head, 4, shadow, ImDrawFlags_Closed, 2.0f);
 
     char label[48];
     std::snprintf(label, sizeof label, "%s %.0f m", vehicle_name(marker.vehicle), double(marker.distance_m));
