@@ -95,7 +95,9 @@ TEST(Gamepad, EveryOneShotControlHasOneButtonAndNoButtonTwoUses) {
     }
     for (int i = 0; i < sim::kControlCount; ++i) {
         const auto c = static_cast<Control>(1u << i);
-        if (uint16_t(c) & sim::kOneShotControls) EXPECT_TRUE(controls.count(c)) << sim::kControlNames[i];
+        if (uint16_t(c) & sim::kOneShotControls) {
+            EXPECT_TRUE(controls.count(c)) << sim::kControlNames[i];
+        }
     }
 }
 
