@@ -230,7 +230,7 @@ TEST(LevelLoader, SuggestsTheNearestLevelNameForATypo) {
 
 TEST(LevelLoader, BrokenLevelFilesGiveOneClearError) {
     expect_error([] { game::load_level("no_such_level"); },
-                 {"no level named 'no_such_level'", "looked for", "no_such_level.json", "levels in", "harbour"});
+                 {"no level named 'no_such_level'", "looked for", "no_such_level.json", "The levels in", "harbour"});
     expect_error([] { game::load_level("/nonexistent/dir/x.json"); }, {"/nonexistent/dir/x.json", "not found"});
     auto level = [](const char* name) { return (test_levels() / name).string(); };
     struct Case {

@@ -534,8 +534,9 @@ LoadedLevel load_level(std::string_view name_or_path, FibreImageReader fibre_rea
             message += "; did you mean '" + *near + "'?";
         std::string list;
         for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
-        message += list.empty() ? "; " + path.parent_path().string() + " holds no levels"
-                                : "; the levels in " + path.parent_path().string() + ": " + list;
+        message += message.back() == '?' ? " " : ". ";
+        message += list.empty() ? path.parent_path().string() + " holds no levels"
+                                : "The levels in " + path.parent_path().string() + ": " + list;
         throw LevelError(message);
     }
     return load_level_text(path, read_level_file(path, kMaxLevelJsonBytes), fibre_reader);
