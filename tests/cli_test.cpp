@@ -127,6 +127,17 @@ TEST_F(Cli, RecordedReplayChecksWithAnyThreadCount) {
     EXPECT_EQ(b.code, 0) << b.output;
 }
 
+TEST_F(Cli, AnAnalogRecordingStoresItsAxesAndReplaysExactly) {
+    fs::path rep = record("level harbour\n0 hold throttle=0.6 steer=0.3\n90 tap steer=-1 brake=0.5\n120 end\n");
+    const game::Replay r = game::read_replay(rep);
+    ASSERT_EQ(r.inputs.size(), 120u);
+    EXPECT_EQ(r.inputs[0], (sim::TickInput{0, 153, 0, 38}));
+    EXPECT_EQ(r.inputs[90], (sim::TickInput{0, 153, 128, -127}));
+    CommandResult check = run("replay " + rep.string() + " --headless --check --frames none --threads 2");
+    EXPECT_EQ(check.code, 0) << check.output;
+    EXPECT_EQ(run_check(rep.string()).code, 0);
+}
+
 TEST_F(Cli, TheGlFreeCheckerPassesARecordingAndNamesTheFirstTickOfADesync) {
     const fs::path rep = record(kShortScript);
     for (const char* threads : {"1", "2"}) {
@@ -205,6 +216,25 @@ TEST_F(Cli, BrokenLevelsAreRefused) {
         EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one message: " << r.output;
         EXPECT_FALSE(fs::exists(out));
     }
+}
+
+TEST_F(Cli, AMistypedLevelNameSuggestsTheNearestAndListsTheLevels) {
+    write_file(dir_ / "s.script", "0 hold\n10 end\n");
+    const std::string script = (dir_ / "s.script").string(), out = (dir_ / "x.replay").string();
+    CommandResult typo = run("record --level harbor --script " + script + " --out " + out);
+    EXPECT_EQ(typo.code, 3) << typo.output;
+    EXPECT_NE(typo.output.find("no level named 'harbor'"), std::string::npos) << typo.output;
+    EXPECT_NE(typo.output.find("did you mean 'harbour'?"), std::string::npos) << typo.output;
+    const size_t list = typo.output.find("The levels in ");
+    ASSERT_NE(list, std::string::npos) << typo.output;
+    EXPECT_NE(typo.output.find("harbour", list), std::string::npos) << typo.output;
+    EXPECT_EQ(std::count(typo.output.begin(), typo.output.end(), '\n'), 1) << "one message: " << typo.output;
+    // Nothing near: the list alone.
+    CommandResult far = run("record --level lighthouse --script " + script + " --out " + out);
+    EXPECT_EQ(far.code, 3) << far.output;
+    EXPECT_EQ(far.output.find("did you mean"), std::string::npos) << far.output;
+    EXPECT_NE(far.output.find("The levels in "), std::string::npos) << far.output;
+    EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(Cli, ALevelWithAnUnstableWaveGridIsRefused) {
@@ -313,10 +343,21 @@ TEST_F(Cli, ARecordingKilledMidwayReplaysUpToItsLastWholeChunk) {
 
 TEST_F(Cli, FrameChecksCatchAWrongGoldenAndNameTheEvidence) {
     fs::path rep = record("level harbour\nframes 64x36\ncheckpoints 30\n0 hold throttle\n40 end\n");
-    // No golden yet: the check fails and says how to make one.
+    // No golden yet: the hashes pass, and the check says the frame went unchecked and
+    // how to make its golden ...
     CommandResult none = run("replay " + rep.string() + " --headless --check --out " + (dir_ / "out").string());
-    EXPECT_EQ(none.code, 1) << none.output;
+    EXPECT_EQ(none.code, 0) << none.output;
+    EXPECT_NE(none.output.find("no golden"), std::string::npos) << none.output;
+    EXPECT_NE(none.output.find("frame not checked"), std::string::npos) << none.output;
     EXPECT_NE(none.output.find("--update-goldens"), std::string::npos) << none.output;
+    EXPECT_NE(none.output.find("check passed (1 of 1 checkpoints have no golden"), std::string::npos) << none.output;
+    EXPECT_EQ(none.output.find("FAILED"), std::string::npos) << none.output;
+    // ... unless goldens are required, as for the bundled replays.
+    CommandResult required =
+        run("replay " + rep.string() + " --headless --check --require-goldens --out " + (dir_ / "out").string());
+    EXPECT_EQ(required.code, 1) << required.output;
+    EXPECT_NE(required.output.find("no golden"), std::string::npos) << required.output;
+    EXPECT_NE(required.output.find("FAILED"), std::string::npos) << required.output;
     CommandResult update = run("replay " + rep.string() + " --headless --update-goldens");
     ASSERT_EQ(update.code, 0) << update.output;
     fs::path golden = dir_ / "r" / "tick_000030.png";

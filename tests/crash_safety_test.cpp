@@ -69,7 +69,11 @@ game::ReplayHeader header() {
     h.subsystem_names = {"car", "boat", "water"};
     return h;
 }
-sim::TickInput input_at(uint32_t t) { return sim::TickInput{uint16_t((t * 2654435761u >> 7) & sim::kAllControls)}; }
+sim::TickInput input_at(uint32_t t) {
+    const uint32_t m = t * 2654435761u;
+    return sim::TickInput{uint16_t((m >> 7) & sim::kAllControls), uint8_t(m >> 3), uint8_t(m >> 11),
+                          int8_t(int((m >> 19) % 255) - sim::kSteerFullScale)};
+}
 sim::WorldHash hash_after(uint32_t t) {
     return sim::WorldHash{t * 0x9E3779B97F4A7C15ull + 1, {t * 31ull + 2, t * 37ull + 3, t * 41ull + 4}};
 }

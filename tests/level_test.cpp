@@ -2,6 +2,7 @@
 // conversion on generated and hand-built files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -213,9 +214,23 @@ TEST(LevelLoader, ResolvesNamesAndPaths) {
 
 // ---- broken levels -----------------------------------------------------------------------
 
+TEST(LevelLoader, SuggestsTheNearestLevelNameForATypo) {
+    const std::vector<std::string> names = {"canal", "harbour", "harbour_night"};
+    EXPECT_EQ(game::nearest_level_name("harbor", names), "harbour");
+    EXPECT_EQ(game::nearest_level_name("Harbour", names), "harbour");  // case ignored
+    EXPECT_EQ(game::nearest_level_name("harbour_nite", names), "harbour_night");
+    EXPECT_EQ(game::nearest_level_name("canl", names), "canal");
+    EXPECT_FALSE(game::nearest_level_name("lighthouse", names).has_value());
+    EXPECT_FALSE(game::nearest_level_name("harbor", {}).has_value());
+    const std::vector<std::string> bundled = game::level_names(game::data_dir() / "levels");
+    EXPECT_NE(std::find(bundled.begin(), bundled.end(), "harbour"), bundled.end());
+    EXPECT_TRUE(std::is_sorted(bundled.begin(), bundled.end()));
+    EXPECT_TRUE(game::level_names("/nonexistent/levels").empty());
+}
+
 TEST(LevelLoader, BrokenLevelFilesGiveOneClearError) {
     expect_error([] { game::load_level("no_such_level"); },
-                 {"no level named 'no_such_level'", "looked for", "no_such_level.json"});
+                 {"no level named 'no_such_level'", "looked for", "no_such_level.json", "The levels in", "harbour"});
     expect_error([] { game::load_level("/nonexistent/dir/x.json"); }, {"/nonexistent/dir/x.json", "not found"});
     auto level = [](const char* name) { return (test_levels() / name).string(); };
     struct Case {

@@ -70,7 +70,12 @@ uint64_t mix(uint64_t x) {  // splitmix64 finaliser: distinct, well-spread test 
     return x ^ (x >> 31);
 }
 
-sim::TickInput input_at(uint32_t tick) { return sim::TickInput{uint16_t(mix(tick) & sim::kAllControls)}; }
+// Held controls and analog axes over their whole ranges (steering -127..127).
+sim::TickInput input_at(uint32_t tick) {
+    const uint64_t m = mix(tick);
+    return sim::TickInput{uint16_t(m & sim::kAllControls), uint8_t(m >> 16), uint8_t(m >> 24),
+                          int8_t(int((m >> 32) % 255) - sim::kSteerFullScale)};
+}
 
 sim::WorldHash hash_after(uint32_t tick, size_t parts = 3) {
     sim::WorldHash h;
@@ -108,7 +113,7 @@ void fix_crc(Bytes& b, size_t from, size_t to) {
 size_t header_size(const Bytes& b) { return get_u32(b, 12); }
 // The on-disk size of a chunk record, straight from the documented layout: header, per tick
 // an input, a world hash and a fingerprint per part, the last tick's full parts, CRC.
-size_t chunk_record_size(uint32_t ticks, size_t parts = 3) { return 20 + ticks * (2 + 8 + parts) + 8 * parts + 4; }
+size_t chunk_record_size(uint32_t ticks, size_t parts = 3) { return 20 + ticks * (5 + 8 + parts) + 8 * parts + 4; }
 
 // Every per-tick hash and fingerprint of `r` is the one write_replay() stored.
 void expect_tick_hashes(const game::Replay& r, size_t parts = 3) {
@@ -208,6 +213,7 @@ TEST_F(ReplayFile, WriterRefusesBadHeadersAndMisuse) {
     auto writer = game::ReplayWriter::create(file("b.replay"), test_header());
     EXPECT_THROW(writer.append(input_at(0), hash_after(1, 2)), std::logic_error);
     EXPECT_THROW(writer.append(sim::TickInput{0x8000}, hash_after(1)), std::logic_error);
+    EXPECT_THROW(writer.append(sim::TickInput{0, 0, 0, -128}, hash_after(1)), std::logic_error);
     writer.append(input_at(0), hash_after(1));
     game::ReplayWriter moved = std::move(writer);
     moved.finish();
@@ -309,8 +315,11 @@ TEST_F(ReplayFile, RefusesWrongMagicVersionAndTrailingBytes) {
     expect_replay_error([&] { parse(b); }, {"test.replay", "not a Spindrift replay"});
     expect_replay_error([&] { parse(Bytes{'G', 'I', 'F'}); }, {"not a Spindrift replay"});
     b = full;
-    set_u32(b, 8, 1);  // the format before per-tick hashes
-    expect_replay_error([&] { parse(b); }, {"test.replay", "is replay format version 1", "reads version 2"});
+    set_u32(b, 8, 2);  // the format before analog inputs
+    expect_replay_error([&] { parse(b); },
+                        {"test.replay", "is replay format version 2", "reads version 3", "re-record it"});
+    set_u32(b, 8, 4);  // a newer build's
+    expect_replay_error([&] { parse(b); }, {"is replay format version 4", "reads version 3"});
     b = full;
     b.insert(b.end(), {1, 2, 3, 4, 5});
     expect_replay_error([&] { parse(b); }, {"test.replay", "trailing garbage after the end record (5 bytes)"});
@@ -352,11 +361,22 @@ TEST_F(ReplayFile, RefusesStructuralLiesThatPassTheCrc) {
     expect_replay_error([&] { parse(b); }, {"chunk 0 (ticks 0..59) has 2 subsystem hashes", "names 3"});
 
     b = full;  // the last tick's fingerprint of 'water' disagrees with its full hash
-    const size_t chunk2 = h + 2 * c60, payload = (2 + 8 + 3) * 17 + 8 * 3;
-    b[chunk2 + 20 + (2 + 8) * 17 + 3 * 16 + 1] ^= 0x01;
+    const size_t chunk2 = h + 2 * c60, payload = (5 + 8 + 3) * 17 + 8 * 3;
+    b[chunk2 + 20 + (5 + 8) * 17 + 3 * 16 + 1] ^= 0x01;
     fix_crc(b, chunk2 + 20, chunk2 + 20 + payload);
     expect_replay_error([&] { parse(b); }, {"chunk 2 (ticks 120..136)", "fingerprint of subsystem 'water'",
                                             "does not match its stored hash"});
+
+    // Inputs no writer stores: an unknown control bit, steering past full scale (-128).
+    const size_t chunk0_payload = (5 + 8 + 3) * 60 + 8 * 3;
+    b = full;
+    b[h + 20 + 5 * 7 + 1] |= 0x80;  // tick 7's held bits
+    fix_crc(b, h + 20, h + 20 + chunk0_payload);
+    expect_replay_error([&] { parse(b); }, {"chunk 0 (ticks 0..59)", "input of tick 7", "unknown control bits"});
+    b = full;
+    b[h + 20 + 5 * 9 + 4] = 0x80;  // tick 9's steering
+    fix_crc(b, h + 20, h + 20 + chunk0_payload);
+    expect_replay_error([&] { parse(b); }, {"input of tick 9", "steers -128", "beyond full scale"});
 }
 
 TEST_F(ReplayFile, RefusesOutOfBoundsHeaderFieldsBeforeAllocating) {

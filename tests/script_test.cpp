@@ -66,6 +66,28 @@ TEST(InputScript, TapsAddToTheHoldOfTheirTickWhateverTheLineOrder) {
     EXPECT_EQ(s.inputs[7].held, bits({Control::Brake}));
 }
 
+TEST(InputScript, AnalogAxesHoldLikeControlsAndTapsReplaceThemForOneTick) {
+    const game::InputScript s = game::parse_script(
+        "0 hold throttle=0.5 steer=-0.25\n"
+        "3 tap steer=1 fire\n"
+        "4 hold brake=1 steer_left\n"
+        "6 hold\n"
+        "7 end",
+        "analog.script");
+    ASSERT_EQ(s.inputs.size(), 7u);
+    EXPECT_EQ(s.inputs[0], (sim::TickInput{0, 128, 0, -32}));  // round(0.5 * 255), round(-0.25 * 127)
+    EXPECT_EQ(s.inputs[2], s.inputs[0]);
+    EXPECT_EQ(s.inputs[3], (sim::TickInput{bits({Control::Fire}), 128, 0, 127}));
+    EXPECT_EQ(s.inputs[4], (sim::TickInput{bits({Control::SteerLeft}), 0, 255, 0}));  // a hold replaces the axes too
+    EXPECT_EQ(s.inputs[6], sim::TickInput{});
+    // A script without axes has none: the bundled scripts mean what they meant.
+    for (const sim::TickInput& in : game::parse_script(kHarbourDrive, "drive.script").inputs) {
+        ASSERT_EQ(in.throttle, 0);
+        ASSERT_EQ(in.brake, 0);
+        ASSERT_EQ(in.steer, 0);
+    }
+}
+
 TEST(InputScript, AcceptsCommentsBlankLinesAndCrlf) {
     const game::InputScript s =
         game::parse_script("\r\n  # only a comment\r\n\t0 hold brake   # trailing\r\n\r\n3 end\r\n\r\n", "crlf.script");
@@ -109,6 +131,15 @@ TEST(InputScript, NamesTheLineOfEachError) {
     expect_script_error("0 end", 1, {"at least 1"});
     expect_script_error("0 hold\n20 hold brake\n20 end", 3, {"ends at tick 20", "never be applied"});
     expect_script_error("0 hold\n5 hold brake\n5 hold fire\n20 end", 3, {"tick 5 already has a 'hold' on line 2"});
+    expect_script_error("0 hold throttle=1.5\n20 end", 1, {"'throttle=1.5'", "a number in 0..1"});
+    expect_script_error("0 hold brake=-0.1\n20 end", 1, {"a number in 0..1"});
+    expect_script_error("0 hold steer=-1.01\n20 end", 1, {"'steer=-1.01'", "a number in -1..1"});
+    expect_script_error("0 hold steer=half\n20 end", 1, {"'steer=half'"});
+    expect_script_error("0 hold steer=\n20 end", 1, {"'steer='"});
+    expect_script_error("0 hold steer=0.5x\n20 end", 1, {"'steer=0.5x'"});
+    expect_script_error("0 hold steer=nan\n20 end", 1, {"'steer=nan'"});
+    expect_script_error("0 hold nitro=1\n20 end", 1, {"unknown axis 'nitro'", "steer=-1..1"});
+    expect_script_error("0 hold steer=0.1 steer=0.2\n20 end", 1, {"axis 'steer' is set twice"});
 }
 
 TEST(InputScript, ChecksCheckpointsFramesAndDuplicates) {

@@ -413,11 +413,57 @@ TEST(JobPool, RejectsAbsurdThreadCounts) {
     EXPECT_THROW(sim::JobPool(1000), std::invalid_argument);
 }
 
-TEST(TickInput, QuantiseDropsUnknownBits) {
+TEST(TickInput, QuantiseDropsUnknownBitsAndKeepsSteeringInFullScale) {
     TickInput in{0xffff};
     EXPECT_EQ(sim::quantise(in).held, sim::kAllControls);
+    EXPECT_EQ(sim::quantise(TickInput{0, 0, 0, -128}).steer, -sim::kSteerFullScale);
+    EXPECT_EQ(sim::quantise(TickInput{0, 255, 7, 127}), (TickInput{0, 255, 7, 127}));
     EXPECT_EQ(sim::control_from_name("fire"), Control::Fire);
     EXPECT_FALSE(sim::control_from_name("jump").has_value());
+}
+
+TEST(TickInput, KeysAreFullScaleAndAxesAddTheirSteps) {
+    // The keyboard's amounts are exactly those of the held bits alone.
+    EXPECT_EQ(sim::throttle_amount(held({Control::Throttle})), 1.0f);
+    EXPECT_EQ(sim::brake_amount(held({Control::Brake})), 1.0f);
+    EXPECT_EQ(sim::steer_amount(held({Control::SteerLeft})), 1.0f);
+    EXPECT_EQ(sim::steer_amount(held({Control::SteerRight})), -1.0f);
+    EXPECT_EQ(sim::steer_amount(held({Control::SteerLeft, Control::SteerRight})), 0.0f);
+    EXPECT_EQ(sim::throttle_amount(TickInput{}), 0.0f);
+    // Analog: in steps of 1/255 and 1/127, full scale exactly 1.
+    EXPECT_EQ(sim::throttle_amount(TickInput{0, 255, 0, 0}), 1.0f);
+    EXPECT_EQ(sim::throttle_amount(TickInput{0, 51, 0, 0}), 0.2f);
+    EXPECT_EQ(sim::brake_amount(TickInput{0, 0, 102, 0}), 0.4f);
+    EXPECT_EQ(sim::steer_amount(TickInput{0, 0, 0, -127}), -1.0f);
+    EXPECT_FLOAT_EQ(sim::steer_amount(TickInput{0, 0, 0, 64}), 64.0f / 127.0f);
+    // A held key wins over a smaller axis; steering adds and stays within -1..1.
+    TickInput both = held({Control::Throttle, Control::SteerLeft});
+    both.throttle = 10;
+    both.steer = 100;
+    EXPECT_EQ(sim::throttle_amount(both), 1.0f);
+    EXPECT_EQ(sim::steer_amount(both), 1.0f);
+    both.steer = -127;
+    EXPECT_EQ(sim::steer_amount(both), 0.0f);
+}
+
+TEST(Player, DrivesWithAnalogAmounts) {
+    sim::World w(make_test_level());
+    w.step(TickInput{0, 128, 0, -64});
+    const sim::DriveInput d = w.get<sim::Player>().drive_input(sim::Vehicle::Car);
+    EXPECT_EQ(d.throttle, 128.0f / 255.0f);
+    EXPECT_EQ(d.brake, 0.0f);
+    EXPECT_EQ(d.steer, -64.0f / 127.0f);
+    // Half throttle accelerates, less than full.
+    sim::World half(make_test_level()), full(make_test_level());
+    run(half, 120, TickInput{0, 128, 0, 0});
+    run(full, 120, held({Control::Throttle}));
+    EXPECT_GT(half.get<sim::Car>().speed_mps(), 1.0f);
+    EXPECT_LT(half.get<sim::Car>().speed_mps(), full.get<sim::Car>().speed_mps() - 1.0f);
+    // Full-scale axes drive exactly as the keys do.
+    sim::World keys(make_test_level()), pad(make_test_level());
+    run(keys, 200, held({Control::Throttle, Control::SteerLeft}));
+    run(pad, 200, TickInput{0, 255, 0, 127});
+    EXPECT_EQ(keys.hash().world, pad.hash().world);
 }
 
 }  // namespace

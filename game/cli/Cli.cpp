@@ -33,14 +33,16 @@ commands:
   record --level NAME|PATH --script FILE --out FILE [--threads N]
          Record a replay headless from an input script (see replays/*.script).
   replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
-              [--update-goldens] [--strict] [--threads N] [--level NAME|PATH] [--quality Q]
+              [--update-goldens] [--require-goldens] [--strict] [--threads N]
+              [--level NAME|PATH] [--quality Q]
          Play a replay in a window (at --quality), or headless. --check verifies every stored hash and
          compares the checkpoint frames with the goldens beside the replay
          (replays/NAME/tick_NNNNNN.png); failures write the actual frame and a
          difference image to --out (default spindrift-out/NAME). --frames picks the
          ticks to render (default: the checkpoints). --out writes the frames as PNG,
          --exr also as EXR (half-float HDR colour, depth, normals). --strict refuses a
-         replay that was cut short. --update-goldens rewrites the goldens.
+         replay that was cut short. --update-goldens rewrites the goldens. A checkpoint
+         with no golden yet is reported and skipped; --require-goldens fails the check.
   timedemo REPLAY [--size WxH] [--quality Q] [--json FILE] [--headless] [--threads N]
          Play a replay through play's frame loop in real time, every frame drawn with
          the HUD (a window if there is a display, else headless at --size, default
@@ -64,9 +66,13 @@ options:
   --help, --version
 
 keys (play): W/Up throttle, S/Down brake/reverse, A/D or Left/Right steer, E switch car/boat
-  (near the pier), 1 throw heavy, 2 throw light, Space fire, C camera (chase/driver),
-  V wipers, R/F rain up/down, P pause, F12 screenshot, F1 debug panel (quality, pass
-  times), F2 profile timing, F3 anti-aliasing on/off, Esc quit. Every press counts, however slow the frames.
+  (near the pier), Backspace reset the vehicle onto the road or open water, 1 throw heavy,
+  2 throw light, Space fire, C camera (chase/driver), V wipers, R/F rain up/down, P pause,
+  F12 screenshot, F1 debug panel (quality, pass times), F2 profile timing, F3
+  anti-aliasing on/off, Esc quit. Every press counts, however slow the frames.
+gamepad (play): right/left trigger throttle/brake, left stick steer, A switch, X throw
+  heavy, Y throw light, B fire, RB camera, LB wipers, D-pad up/down rain, Start pause,
+  Back reset.
 
 exit codes:
   0 success   1 a hash or frame check failed   2 bad command line

@@ -10,7 +10,10 @@ void InputQueue::press(sim::Control control) {
         tapped_ |= bit;
 }
 
-void InputQueue::set_down(sim::TickInput down) { down_ = down.held; }
+void InputQueue::set_down(sim::TickInput down) {
+    down_ = down.held;
+    axes_ = down;
+}
 
 sim::TickInput InputQueue::next_tick() {
     uint16_t held = (down_ | tapped_) & ~sim::kOneShotControls;
@@ -28,7 +31,9 @@ sim::TickInput InputQueue::next_tick() {
         }
     }
     last_ = one_shot;
-    return sim::TickInput{uint16_t(held | one_shot)};
+    sim::TickInput in = axes_;
+    in.held = uint16_t(held | one_shot);
+    return in;
 }
 
 void InputQueue::clear() {

@@ -13,12 +13,13 @@ namespace game {
 // then at least one without it before the next press of it. Presses rise one a tick in
 // the order they were made; those a frame has no ticks left for wait for the next
 // frame's. Held controls (throttle, brake, steering) follow the keys, and a tap that
-// began and ended between two ticks still holds its control for one tick.
+// began and ended between two ticks still holds its control for one tick. The analog
+// axes follow the gamepad as it was last read.
 class InputQueue {
 public:
     // A key went down (not an auto-repeat), in the order the keys went down.
     void press(sim::Control control);
-    // The controls whose keys are down now.
+    // The controls whose keys are down now, and where the analog axes (a gamepad) are.
     void set_down(sim::TickInput down);
     // The input for the next tick.
     sim::TickInput next_tick();
@@ -30,6 +31,7 @@ public:
 private:
     std::deque<sim::Control> presses_;
     uint16_t down_ = 0;
+    sim::TickInput axes_;  // its throttle, brake and steer go to every tick as they are
     uint16_t tapped_ = 0;  // held controls pressed since the last tick
     uint16_t last_ = 0;    // one-shot controls held on the last tick
 };

@@ -10,6 +10,9 @@
 #include "game/play/FixedStepClock.h"
 #include "game/play/KeyboardInput.h"
 #include "game/play/ObjectiveHud.h"
+#include "game/play/WayfindingHud.h"
+#include "sim/vehicle/Boat.h"
+#include "sim/vehicle/Car.h"
 
 namespace game {
 
@@ -90,12 +93,18 @@ void PlayLoop::run(const LoopHooks& hooks) {
         // Idle with its frame shown (or nothing to show): sleep until something happens.
         screen_.handle_events(was_idle && (idle_frame_shown || minimised) ? kIdleWaitSeconds : 0.0);
         for (int key : screen_.take_key_presses()) on_key_press(key, keyboard_drives);
-        const bool activity = screen_.take_activity();
+        sim::TickInput gamepad;
+        const bool gamepad_pressed = read_gamepad(keyboard_drives, gamepad);
+        const bool activity = screen_.take_activity() || gamepad_pressed;
         if (ui_.wants_keyboard()) {
             input_.clear();
             input_.set_down({});
         } else {
-            input_.set_down(input_from_keys([this](int key) { return screen_.key_down(key); }));
+            sim::TickInput down = input_from_keys([this](int key) { return screen_.key_down(key); });
+            down.throttle = gamepad.throttle;
+            down.brake = gamepad.brake;
+            down.steer = gamepad.steer;
+            input_.set_down(down);
         }
         const bool idle = is_idle();  // the events may have paused or unfocused it
 
@@ -155,7 +164,25 @@ void PlayLoop::on_key_press(int key, bool keyboard_drives) {
     }
     // Typing into an ImGui field: P and Esc belong to the field.
     if (ui_.wants_keyboard() && (*action == UiAction::Pause || *action == UiAction::Quit)) return;
-    switch (*action) {
+    on_ui_action(*action);
+}
+
+bool PlayLoop::read_gamepad(bool keyboard_drives, sim::TickInput& axes) {
+    GLFWgamepadstate now{};
+    // Unplugged: every button up and the axes at rest.
+    const bool connected = screen_.read_gamepad(&now);
+    if (!connected) now = GLFWgamepadstate{};
+    const GamepadPresses presses = gamepad_presses(gamepad_before_, now);
+    gamepad_before_ = now;
+    axes = connected && keyboard_drives ? gamepad_axes(now) : sim::TickInput{};
+    for (UiAction action : presses.actions) on_ui_action(action);
+    for (sim::Control control : presses.controls)
+        if (keyboard_drives && !paused_ && !ui_.wants_keyboard()) input_.press(control);
+    return !presses.actions.empty() || !presses.controls.empty();
+}
+
+void PlayLoop::on_ui_action(UiAction action) {
+    switch (action) {
         case UiAction::Pause: paused_ = !paused_; break;
         case UiAction::Screenshot: screenshot_wanted_ = true; break;
         case UiAction::ToggleDebugPanel: panel_open_ = !panel_open_; break;
@@ -196,6 +223,12 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     ui_.begin_frame(size.width, size.height);
     ui_.draw_hud(hud);
     draw_objective_hud(world);
+    // The prompt follows the sim's positions (its rule, at this tick); the marker the
+    // drawn ones, so it stays on the vehicle as it moves.
+    const sim::Vehicle aboard = world.get<sim::Player>().vehicle();
+    draw_wayfinding(switch_prompt(aboard, world.get<sim::Car>().position(), world.get<sim::Boat>().position()),
+                    vehicle_marker(aboard, poses.car.position, poses.boat.position, poses.camera, float(size.width),
+                                   float(size.height)));
     if (panel_open_) {
         QualityChoice quality = quality_;
         if (ui_.draw_debug_panel(renderer_, quality, &panel_open_)) set_quality(quality);

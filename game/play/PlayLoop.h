@@ -11,6 +11,7 @@
 #include "effects/Renderer.h"
 #include "effects/gl/DebugOutput.h"
 #include "game/play/DebugUi.h"
+#include "game/play/GamepadInput.h"
 #include "game/play/InputQueue.h"
 #include "game/play/QualityChoice.h"
 #include "game/play/ResolutionController.h"
@@ -80,6 +81,10 @@ private:
     };
 
     void on_key_press(int key, bool keyboard_drives);
+    void on_ui_action(UiAction action);
+    // Reads the gamepad: its presses act now, its axes are returned for this frame's
+    // ticks (all zero without a gamepad). Returns whether a button went down.
+    bool read_gamepad(bool keyboard_drives, sim::TickInput& axes);
     void draw_frame(const LoopHooks& hooks, Screen::Size size, double alpha);
     void take_screenshot(Screen::Size size);
 
@@ -90,6 +95,7 @@ private:
     effects::Renderer renderer_;
     DebugUi ui_;
     InputQueue input_;
+    GLFWgamepadstate gamepad_before_{};  // the buttons at the last read: presses are their rising edges
     QualityChoice quality_ = QualityChoice::Auto;
     std::optional<ResolutionController> resolution_;  // auto quality only
     effects::FramePoses previous_poses_;  // the world's moving things one tick before its last

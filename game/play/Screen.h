@@ -6,6 +6,7 @@
 #include "effects/gl/Gl.h"
 
 struct GLFWwindow;
+struct GLFWgamepadstate;
 
 namespace game {
 
@@ -31,6 +32,8 @@ public:
     // Input: none offscreen.
     virtual std::vector<int> take_key_presses() { return {}; }
     virtual bool key_down(int /*glfw_key*/) const { return false; }
+    // The first connected gamepad's state into `state`; false if there is none.
+    virtual bool read_gamepad(GLFWgamepadstate* /*state*/) const { return false; }
     virtual bool focused() const { return true; }
     // Whether anything (input, an expose) happened since the last call.
     virtual bool take_activity() { return false; }

@@ -76,6 +76,12 @@ Window::Size Window::framebuffer_size() const {
 
 bool Window::key_down(int glfw_key) const { return glfwGetKey(window_, glfw_key) == GLFW_PRESS; }
 
+bool Window::read_gamepad(GLFWgamepadstate* state) const {
+    for (int jid = GLFW_JOYSTICK_1; jid <= GLFW_JOYSTICK_LAST; ++jid)
+        if (glfwJoystickIsGamepad(jid) && glfwGetGamepadState(jid, state)) return true;
+    return false;
+}
+
 bool Window::minimised() const { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) != 0; }
 
 bool Window::take_activity() {

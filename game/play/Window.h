@@ -5,6 +5,7 @@
 #include <vector>
 
 struct GLFWwindow;
+struct GLFWgamepadstate;
 
 namespace game {
 
@@ -39,6 +40,9 @@ public:
 
     // Whether `glfw_key` is down now (a tap between two polls shows only as a press).
     bool key_down(int glfw_key) const;
+    // The first joystick GLFW knows a gamepad mapping for, read now; false if none is
+    // connected.
+    bool read_gamepad(GLFWgamepadstate* state) const;
     // Keys pressed (not auto-repeated) since the last call, in order.
     std::vector<int> take_key_presses();
     // False from losing the keyboard focus until it comes back. Starts true: a window

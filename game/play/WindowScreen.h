@@ -21,6 +21,7 @@ public:
 
     std::vector<int> take_key_presses() override { return window_.take_key_presses(); }
     bool key_down(int glfw_key) const override { return window_.key_down(glfw_key); }
+    bool read_gamepad(GLFWgamepadstate* state) const override { return window_.read_gamepad(state); }
     bool focused() const override { return window_.focused(); }
     bool take_activity() override { return window_.take_activity(); }
     GLFWwindow* glfw_window() const override { return window_.handle(); }

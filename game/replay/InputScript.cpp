@@ -1,6 +1,8 @@
 #include "game/replay/InputScript.h"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -38,11 +40,16 @@ std::string valid_control_names() {
     return names;
 }
 
-// One timed change: a hold (replaces the held set from `tick` on) or taps (that tick only).
+// The analog axes a script can set, as NAME=VALUE: a gamepad's part of the input.
+enum AxisBit : uint8_t { kThrottleAxis = 1, kBrakeAxis = 2, kSteerAxis = 4 };
+
+// One timed change: a hold (replaces the held set and the axes from `tick` on) or taps
+// (that tick only; an axis a tap names replaces the held one for that tick).
 struct ScriptEvent {
     uint32_t tick = 0;
     bool hold = false;
-    uint16_t controls = 0;
+    sim::TickInput input;  // controls and axes
+    uint8_t axes = 0;      // AxisBits the line names
     int line = 0;
 };
 
@@ -151,15 +158,46 @@ private:
         return tick;
     }
 
-    uint16_t parse_controls(const std::vector<std::string_view>& words) const {
-        uint16_t mask = 0;
+    // VALUE of an axis word: a decimal number in [lowest, 1], as the nearest step of 1/full_scale.
+    int parse_axis_value(std::string_view name, std::string_view text, float lowest, int full_scale) const {
+        float value = 0.0f;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value,
+                                                  std::chars_format::fixed);
+        if (error != std::errc() || end != text.data() + text.size() || !(value >= lowest && value <= 1.0f))
+            fail("'" + std::string(name) + "=" + std::string(text) + "': the value must be a number in " +
+                 (lowest < 0.0f ? "-1..1" : "0..1") + " (e.g. '" + std::string(name) + "=0.5')");
+        return int(std::lround(value * float(full_scale)));
+    }
+
+    // The controls and axes a hold or tap line names.
+    void parse_controls(const std::vector<std::string_view>& words, ScriptEvent& event) const {
         for (size_t i = 2; i < words.size(); ++i) {
-            const std::optional<sim::Control> control = sim::control_from_name(words[i]);
+            const std::string_view word = words[i];
+            if (const size_t eq = word.find('='); eq != std::string_view::npos) {
+                const std::string_view name = word.substr(0, eq), value = word.substr(eq + 1);
+                uint8_t bit = 0;
+                if (name == "throttle") {
+                    bit = kThrottleAxis;
+                    event.input.throttle = uint8_t(parse_axis_value(name, value, 0.0f, sim::kPedalFullScale));
+                } else if (name == "brake") {
+                    bit = kBrakeAxis;
+                    event.input.brake = uint8_t(parse_axis_value(name, value, 0.0f, sim::kPedalFullScale));
+                } else if (name == "steer") {
+                    bit = kSteerAxis;
+                    event.input.steer = int8_t(parse_axis_value(name, value, -1.0f, sim::kSteerFullScale));
+                } else {
+                    fail("unknown axis '" + std::string(name) + "' (valid: throttle=0..1, brake=0..1, steer=-1..1)");
+                }
+                if (event.axes & bit) fail("axis '" + std::string(name) + "' is set twice on one line");
+                event.axes = uint8_t(event.axes | bit);
+                continue;
+            }
+            const std::optional<sim::Control> control = sim::control_from_name(word);
             if (!control)
-                fail("unknown control '" + std::string(words[i]) + "' (valid: " + valid_control_names() + ")");
-            mask = uint16_t(mask | uint16_t(*control));
+                fail("unknown control '" + std::string(word) + "' (valid: " + valid_control_names() +
+                     "; axes: throttle=0..1, brake=0..1, steer=-1..1)");
+            event.input.set(*control, true);
         }
-        return mask;
     }
 
     void parse_tick_line(const std::vector<std::string_view>& words) {
@@ -180,7 +218,9 @@ private:
                 if (e.hold && e.tick == tick)
                     fail("tick " + to_string(tick) + " already has a 'hold' on line " + to_string(e.line) +
                          ": merge them into one");
-        events_.push_back(ScriptEvent{tick, hold, parse_controls(words), line_});
+        ScriptEvent event{tick, hold, {}, 0, line_};
+        parse_controls(words, event);
+        events_.push_back(event);
         have_tick_ = true;
         last_tick_ = tick;
     }
@@ -198,20 +238,33 @@ private:
         end_line_ = line_;
     }
 
-    // Holds replace the held set from their tick on; taps add to it at their tick only.
+    // Holds replace the held set and the axes from their tick on; taps add controls to
+    // them, and replace the axes they name, at their tick only.
     void expand() {
         script_.inputs.assign(script_.end_tick, sim::TickInput{});
-        uint16_t held = 0;
+        sim::TickInput held;
         size_t next = 0;
         for (uint32_t t = 0; t < script_.end_tick; ++t) {
-            uint16_t tapped = 0;
+            sim::TickInput tapped;
+            uint8_t tapped_axes = 0;
             for (; next < events_.size() && events_[next].tick == t; ++next) {
-                if (events_[next].hold)
-                    held = events_[next].controls;
-                else
-                    tapped = uint16_t(tapped | events_[next].controls);
+                const ScriptEvent& e = events_[next];
+                if (e.hold) {
+                    held = e.input;
+                    continue;
+                }
+                tapped.held = uint16_t(tapped.held | e.input.held);
+                if (e.axes & kThrottleAxis) tapped.throttle = e.input.throttle;
+                if (e.axes & kBrakeAxis) tapped.brake = e.input.brake;
+                if (e.axes & kSteerAxis) tapped.steer = e.input.steer;
+                tapped_axes = uint8_t(tapped_axes | e.axes);
             }
-            script_.inputs[t].held = uint16_t(held | tapped);
+            sim::TickInput& now = script_.inputs[t];
+            now = held;
+            now.held = uint16_t(held.held | tapped.held);
+            if (tapped_axes & kThrottleAxis) now.throttle = tapped.throttle;
+            if (tapped_axes & kBrakeAxis) now.brake = tapped.brake;
+            if (tapped_axes & kSteerAxis) now.steer = tapped.steer;
         }
     }
 

@@ -7,6 +7,7 @@
 //   frames 480x270             optional: checkpoint frame size, each side 16..4096
 //   checkpoints 90 300 600     optional: ticks whose frames are checked, ascending, < end
 //   0    hold throttle         from tick 0 hold these controls (replaces the held set)
+//   60   hold steer=0.5 throttle=0.8   analog axes (a gamepad): throttle, brake 0..1, steer -1..1 (+ left)
 //   200  tap camera            add 'camera' at tick 200 only, on top of the held set
 //   300  hold                  hold nothing
 //   900  end                   required, last: simulate ticks 0..899

@@ -9,7 +9,8 @@
 //            sim_params:str                                   (str = length:u32 + bytes)
 //            crc32 of all the header bytes before it
 //   chunk  : "CHNK" first_tick:u32 tick_count:u32 part_count:u32 crc32(tag and these fields)
-//            input:u16[tick_count]                       input applied at each tick
+//            input[tick_count]                           input applied at each tick:
+//              held:u16 throttle:u8 brake:u8 steer:i8      (sim::TickInput, 5 bytes)
 //            world_hash:u64[tick_count]                  world hash after each tick
 //            fingerprint:u8[tick_count][part_count]      low byte of each subsystem hash after each tick
 //            part_hash:u64[part_count]                   full subsystem hashes after the chunk's last tick
@@ -27,7 +28,9 @@
 namespace game {
 
 inline constexpr std::array<uint8_t, 8> kReplayMagic = {'S', 'P', 'D', 'R', 'I', 'F', 'T', 0x1A};
-inline constexpr uint32_t kReplayVersion = 2;
+// 3: analog throttle, brake and steering beside the held controls (version 2 had the
+// held controls alone; the reader refuses it with a note to re-record).
+inline constexpr uint32_t kReplayVersion = 3;
 
 inline constexpr uint32_t kChunkTicks = 60;        // the writer's chunk length: one second
 inline constexpr uint32_t kMaxChunkTicks = 600;    // the reader accepts chunks up to this length
@@ -48,11 +51,12 @@ inline constexpr size_t kCrcBytes = 4;
 inline constexpr size_t kHeaderPrefixBytes = 16;   // magic, version, header_size
 inline constexpr size_t kChunkHeaderBytes = 20;    // tag, 3 fields, crc
 inline constexpr size_t kEndRecordBytes = 16;      // tag, 2 fields, crc
+inline constexpr size_t kInputBytes = 5;           // held:u16 throttle:u8 brake:u8 steer:i8
 
 // Bytes of a chunk's payload (without its CRC): per tick an input, a world hash and one
 // fingerprint byte per subsystem, then the full subsystem hashes after the last tick.
 inline constexpr size_t chunk_payload_bytes(size_t tick_count, size_t part_count) {
-    return tick_count * (2 + 8 + part_count) + 8 * part_count;
+    return tick_count * (kInputBytes + 8 + part_count) + 8 * part_count;
 }
 // The fingerprint stored per tick and subsystem: enough to name which subsystem differs.
 inline constexpr uint8_t part_fingerprint(uint64_t part_hash) { return uint8_t(part_hash); }

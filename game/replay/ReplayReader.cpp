@@ -93,7 +93,9 @@ private:
             const uint32_t version = get_u32(&bytes_[8]);
             if (version != kReplayVersion)
                 fail(name_ + " is replay format version " + to_string(version) + "; this build reads version " +
-                     to_string(kReplayVersion));
+                     to_string(kReplayVersion) +
+                     (version < kReplayVersion ? " (re-record it from its .script, or with the build that made it)"
+                                               : ""));
         }
         if (n < kHeaderPrefixBytes)
             fail(name_ + " is cut inside its header (" + to_string(n) + " of at least " +
@@ -191,13 +193,18 @@ private:
                 if (get_u32(&bytes_[at + payload]) != crc_of(at, payload))
                     fail(name_ + ": " + chunk_label(chunks, first, count) + " fails its CRC (payload at byte " + to_string(at) + ")");
                 for (uint32_t i = 0; i < count; ++i) {
-                    const sim::TickInput input{get_u16(&bytes_[at + 2 * i])};
-                    if (sim::quantise(input) != input)
+                    const uint8_t* p = &bytes_[at + kInputBytes * i];
+                    const sim::TickInput input{get_u16(p), p[2], p[3], int8_t(p[4])};
+                    if (sim::quantise(input).held != input.held)
                         fail(name_ + ": " + chunk_label(chunks, first, count) + ": the input of tick " + to_string(first + i) +
                              " has unknown control bits (" + hex32(input.held) + ")");
+                    if (sim::quantise(input) != input)
+                        fail(name_ + ": " + chunk_label(chunks, first, count) + ": the input of tick " + to_string(first + i) +
+                             " steers " + to_string(int(input.steer)) + ", beyond full scale (" +
+                             to_string(sim::kSteerFullScale) + ")");
                     replay.inputs.push_back(input);
                 }
-                const size_t world_at = at + 2 * size_t(count);
+                const size_t world_at = at + kInputBytes * size_t(count);
                 for (uint32_t i = 0; i < count; ++i)
                     replay.tick_world_hashes.push_back(get_u64(&bytes_[world_at + 8 * i]));
                 const size_t fingerprints_at = world_at + 8 * size_t(count);

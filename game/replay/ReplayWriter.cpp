@@ -135,7 +135,7 @@ void ReplayWriter::append(sim::TickInput input, const sim::WorldHash& after) {
     if (finished_) throw std::logic_error("replay " + path_.string() + ": append() after finish()");
     if (failed_) throw ReplayWriteError("replay " + path_.string() + ": an earlier write failed");
     if (sim::quantise(input) != input)
-        throw std::logic_error("replay " + path_.string() + ": input has unknown control bits");
+        throw std::logic_error("replay " + path_.string() + ": input has unknown control bits or steering beyond full scale");
     if (after.parts.size() != part_count_)
         throw std::logic_error("replay " + path_.string() + ": world hash has " +
                                std::to_string(after.parts.size()) + " parts, the header names " +
@@ -194,7 +194,12 @@ void ReplayWriter::write_pending_chunk() {
     put_u32(chunk, count);
     put_u32(chunk, uint32_t(part_count_));
     put_crc_since(chunk, 0);
-    for (sim::TickInput in : pending_inputs_) put_u16(chunk, in.held);
+    for (sim::TickInput in : pending_inputs_) {
+        put_u16(chunk, in.held);
+        chunk.push_back(in.throttle);
+        chunk.push_back(in.brake);
+        chunk.push_back(uint8_t(in.steer));
+    }
     for (uint64_t world : pending_world_hashes_) put_u64(chunk, world);
     chunk.insert(chunk.end(), pending_fingerprints_.begin(), pending_fingerprints_.end());
     for (uint64_t part : pending_parts_) put_u64(chunk, part);

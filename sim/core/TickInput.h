@@ -40,8 +40,19 @@ inline constexpr std::string_view kControlNames[kControlCount] = {
 
 std::optional<Control> control_from_name(std::string_view name);
 
+// Full scale of the analog axes: a gamepad's trigger or stick is stored in steps of
+// 1/255 (throttle, brake) or 1/127 (steering), so that a replay holds exactly what the
+// sim applied.
+inline constexpr int kPedalFullScale = 255;
+inline constexpr int kSteerFullScale = 127;
+
 struct TickInput {
     uint16_t held = 0;  // bitmask of Control
+    // Analog driving on top of the held bits (a gamepad); a held Throttle, Brake or
+    // Steer* bit counts as full scale, so keyboard input needs none of these.
+    uint8_t throttle = 0;  // 0..kPedalFullScale
+    uint8_t brake = 0;     // 0..kPedalFullScale
+    int8_t steer = 0;      // -kSteerFullScale (right) .. +kSteerFullScale (left), as DriveInput::steer
 
     bool has(Control c) const { return (held & static_cast<uint16_t>(c)) != 0; }
     void set(Control c, bool on) {
@@ -50,7 +61,19 @@ struct TickInput {
     bool operator==(const TickInput&) const = default;
 };
 
-// Unknown bits are dropped so that any recorded value is a valid input.
-inline TickInput quantise(TickInput in) { return TickInput{uint16_t(in.held & kAllControls)}; }
+// Unknown bits are dropped and steering is kept within full scale, so that any recorded
+// value is a valid input.
+inline TickInput quantise(TickInput in) {
+    in.held = uint16_t(in.held & kAllControls);
+    if (in.steer < -kSteerFullScale) in.steer = int8_t(-kSteerFullScale);
+    return in;
+}
+
+// The driving amounts of an input: the larger of a held bit (full scale) and the analog
+// axis; steering adds the axis to the bits' difference, within -1..1. Exact in IEEE-754
+// (one division by a whole number), so the same input steers the same everywhere.
+float throttle_amount(const TickInput& in);
+float brake_amount(const TickInput& in);
+float steer_amount(const TickInput& in);
 
 }  // namespace sim

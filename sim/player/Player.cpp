@@ -13,9 +13,9 @@ Player::Player(float rain_intensity) : rain_intensity_(std::clamp(rain_intensity
 
 void Player::step(StepContext& ctx) {
     const TickInput& in = ctx.input;
-    controls_.throttle = in.has(Control::Throttle) ? 1.0f : 0.0f;
-    controls_.brake = in.has(Control::Brake) ? 1.0f : 0.0f;
-    controls_.steer = (in.has(Control::SteerLeft) ? 1.0f : 0.0f) - (in.has(Control::SteerRight) ? 1.0f : 0.0f);
+    controls_.throttle = throttle_amount(in);
+    controls_.brake = brake_amount(in);
+    controls_.steer = steer_amount(in);
 
     if (ctx.pressed(Control::SwitchVehicle)) {
         glm::vec3 car = ctx.world.get<Car>().position();
