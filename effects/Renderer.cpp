@@ -6,9 +6,13 @@
 #include <glm/geometric.hpp>
 
 #include "effects/gl/DebugGroup.h"
-#include "sim/player/Player.h"
 
 namespace effects {
+namespace {
+
+const glm::vec3 kClearSunRadiance(3.2f, 3.0f, 2.7f);
+
+}  // namespace
 
 Renderer::Renderer(const SceneDesc& scene, const sim::World& world, RendererOptions options)
     : resources_{scene, SceneGeometry(scene, world.terrain()),
@@ -43,12 +47,14 @@ void Renderer::render(const sim::World& world, RenderOutput output, const FrameP
         resources_.targets.resize(width, height);
         for (auto& p : passes_) p->resize(width, height);
     }
-    // Rain brings cloud: the sun weakens and the sky greys.
-    float rain = world.get<sim::Player>().rain_intensity();
+    // The sim's weather, once for the frame: cloud greys the sky and weakens the sun.
+    const WeatherLook weather = weather_look(world);
+    resources_.lighting.weather = weather;
     SkyState& sky = resources_.lighting.sky;
     sky.sun_dir = sun_dir_;
-    sky.sun_radiance = glm::vec3(3.2f, 3.0f, 2.7f) * (1.0f - 0.75f * rain);
-    sky.sky_intensity = 1.0f - 0.45f * rain;
+    sky.sun_radiance = kClearSunRadiance * weather.sunlight;
+    sky.sky_intensity = weather.sky_intensity;
+    sky.overcast = weather.overcast;
 
     Camera camera = make_camera(poses.camera, float(output.width) / float(output.height));
     FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds, poses};

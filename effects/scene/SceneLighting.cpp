@@ -51,6 +51,7 @@ void SceneLighting::apply_sky(const gl::Program& p) const {
     p.set("u_sun_dir", sky.sun_dir);
     p.set("u_sun_radiance", sky.sun_radiance);
     p.set("u_sky_intensity", sky.sky_intensity);
+    p.set("u_overcast", sky.overcast);
 }
 
 void SceneLighting::apply(const gl::Program& p) const {

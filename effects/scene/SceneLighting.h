@@ -9,6 +9,7 @@
 #include "effects/gl/Buffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
+#include "effects/scene/WeatherLook.h"
 
 namespace effects {
 
@@ -16,6 +17,7 @@ struct SkyState {
     glm::vec3 sun_dir{0.4f, 0.8f, 0.3f};
     glm::vec3 sun_radiance{3.2f, 3.0f, 2.7f};
     float sky_intensity = 1.0f;
+    float overcast = 0.0f;  // 0 clear .. 1 a grey cloud deck hiding the sun
     bool operator==(const SkyState&) const = default;
 };
 
@@ -43,6 +45,7 @@ public:
     void apply(const gl::Program& program) const;
 
     SkyState sky;
+    WeatherLook weather;  // this frame's; `sky` is made from it
     glm::mat4 shadow_view_proj{1.0f};
     gl::Texture env_cube;
     gl::Texture shadow_map;
