@@ -8,11 +8,6 @@
 #include "effects/gl/DebugGroup.h"
 
 namespace effects {
-namespace {
-
-const glm::vec3 kClearSunRadiance(3.2f, 3.0f, 2.7f);
-
-}  // namespace
 
 Renderer::Renderer(const SceneDesc& scene, const sim::World& world, RendererOptions options)
     : resources_{scene, SceneGeometry(scene, world.terrain()),
@@ -47,14 +42,9 @@ void Renderer::render(const sim::World& world, RenderOutput output, const FrameP
         resources_.targets.resize(width, height);
         for (auto& p : passes_) p->resize(width, height);
     }
-    // The sim's weather, once for the frame: cloud greys the sky and weakens the sun.
-    const WeatherLook weather = weather_look(world);
-    resources_.lighting.weather = weather;
-    SkyState& sky = resources_.lighting.sky;
-    sky.sun_dir = sun_dir_;
-    sky.sun_radiance = kClearSunRadiance * weather.sunlight;
-    sky.sky_intensity = weather.sky_intensity;
-    sky.overcast = weather.overcast;
+    // The sim's weather, once for the frame.
+    resources_.lighting.sky.sun_dir = sun_dir_;
+    resources_.lighting.set_weather(weather_look(world));
 
     Camera camera = make_camera(poses.camera, float(output.width) / float(output.height));
     FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds, poses};

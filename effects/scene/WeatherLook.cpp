@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "sim/weather/Weather.h"
 
 namespace effects {
 namespace {
@@ -11,16 +10,19 @@ float stepped(float x) { return std::round(x / kWeatherLookStep) * kWeatherLookS
 
 }  // namespace
 
-WeatherLook weather_look(const sim::World& world) {
+WeatherLook weather_look(const sim::Weather& weather) {
     WeatherLook look;
-    const sim::Weather* weather = world.find<sim::Weather>();
-    if (!weather) return look;
-    look.overcast = stepped(weather->cloud_cover());
-    look.sunlight = stepped(weather->sunlight());
+    look.overcast = stepped(weather.cloud_cover());
+    look.sunlight = stepped(weather.sunlight());
     look.sky_intensity = 1.0f - (1.0f - kOvercastSkyIntensity) * look.overcast;
-    look.road_wetness = stepped(weather->road_wetness());
-    look.rain_rate = weather->rain_rate();
+    look.road_wetness = stepped(weather.road_wetness());
+    look.rain_rate = weather.rain_rate();
     return look;
+}
+
+WeatherLook weather_look(const sim::World& world) {
+    const sim::Weather* weather = world.find<sim::Weather>();
+    return weather ? weather_look(*weather) : WeatherLook{};
 }
 
 }  // namespace effects

@@ -4,6 +4,7 @@
 // streak layer draws. Clear weather when the world has no weather.
 #include <glm/vec3.hpp>
 
+#include "sim/weather/Weather.h"
 #include "sim/world/World.h"
 
 namespace effects {
@@ -24,6 +25,7 @@ inline constexpr float kWeatherLookStep = 1.0f / 128.0f;
 // The sky's brightness under full cloud, of a clear sky's.
 inline constexpr float kOvercastSkyIntensity = 0.6f;
 
+WeatherLook weather_look(const sim::Weather& weather);
 WeatherLook weather_look(const sim::World& world);
 
 }  // namespace effects
