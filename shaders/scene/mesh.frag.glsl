@@ -67,7 +67,8 @@ vec3 ground_colour(vec3 p, out float roughness, out float wet_roughness) {
         if (p.x >= r.x && p.x <= r.z && p.z >= r.y && p.z <= r.w) {
             c = vec3(0.045, 0.045, 0.05) * (0.85 + 0.3 * n);
             roughness = 0.7;
-            wet_roughness = 0.22 - 0.16 * n;  // the worn hollows (lighter noise) hold puddles
+            // The worn hollows (the noise's high end) hold puddles: mirrors of the sky.
+            wet_roughness = mix(0.2, 0.03, smoothstep(0.5, 0.7, n));
             // Dashed centre line along the road's long axis.
             bool along_x = (r.z - r.x) > (r.w - r.y);
             float centre = along_x ? abs(p.z - 0.5 * (r.y + r.w)) : abs(p.x - 0.5 * (r.x + r.z));
