@@ -11,6 +11,10 @@ namespace {
 // The drops' fall (m/s) with a little wind across it: a slant reads as rain, not snow.
 const glm::vec3 kFall(1.2f, -9.0f, 0.6f);
 
+// The streaks' colour under a clear sky's intensity: sky.glsl's cloud deck overhead,
+// a little brighter (drops scatter the light towards the eye).
+const glm::vec3 kStreakColour(0.70f, 0.73f, 0.77f);
+
 }  // namespace
 
 RainStreakPass::RainStreakPass()
@@ -45,7 +49,6 @@ void RainStreakPass::render(const FrameContext& frame) {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     program_.use();
-    frame.scene.lighting.apply_sky(program_);
     program_.set("u_view_proj", frame.camera.view_proj);
     program_.set("u_eye", frame.camera.eye);
     // Wrapped to a period the box repeats in, so the time stays small and exact.
@@ -55,6 +58,7 @@ void RainStreakPass::render(const FrameContext& frame) {
     program_.set("u_exposure_s", look_.exposure_s);
     program_.set("u_near_m", look_.near_m);
     program_.set("u_opacity", look_.opacity);
+    program_.set("u_colour", kStreakColour * weather.sky_intensity);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_LINES, 0, 2 * drawn_);
     glDisable(GL_BLEND);

@@ -14,8 +14,8 @@ namespace effects {
 // The tweakable look, registered with the debug panel under "rain streaks".
 struct RainStreakLook {
     bool enabled = true;
-    int drops_at_full_rain = 9000;  // in the whole box
-    float box_m = 28.0f;            // the box's width and depth about the eye (height: half that)
+    int drops_at_full_rain = 7000;  // in the whole box
+    float box_m = 24.0f;            // the box's width and depth about the eye (height: half that)
     float near_m = 2.0f;            // none nearer: the glass and the cabin are in the way
     float opacity = 0.28f;
     float exposure_s = 0.04f;       // a streak's length is its fall over this long

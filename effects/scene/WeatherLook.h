@@ -20,7 +20,7 @@ struct WeatherLook {
 
 // Steps of this size only, so that the environment cube, which is rebuilt whenever the
 // sky changes, is not rebuilt for changes nobody can see.
-inline constexpr float kWeatherLookStep = 1.0f / 128.0f;
+inline constexpr float kWeatherLookStep = 1.0f / 64.0f;
 
 // The sky's brightness under full cloud, of a clear sky's.
 inline constexpr float kOvercastSkyIntensity = 0.6f;

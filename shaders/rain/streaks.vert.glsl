@@ -1,5 +1,4 @@
 #version 450 core
-#include "common/sky.glsl"
 // One rain streak per two vertices (GL_LINES, no vertex buffer; RainStreakPass). A drop
 // has a fixed place in the world that falls with time and wraps into a box about the
 // eye; its streak runs from where it is to where it was one exposure ago.
@@ -11,6 +10,7 @@ uniform vec3 u_fall_mps;
 uniform float u_exposure_s;
 uniform float u_near_m;
 uniform float u_opacity;
+uniform vec3 u_colour;  // lit by the grey sky they fall from
 out float v_alpha;
 out vec3 v_colour;
 
@@ -33,7 +33,6 @@ void main() {
     // Faded in past the near limit and out before the box's sides, where drops wrap.
     float reach = 0.5 * min(u_box_m.x, u_box_m.z);
     v_alpha = u_opacity * smoothstep(u_near_m, u_near_m + 1.5, dist) * (1.0 - smoothstep(0.55 * reach, 0.95 * reach, dist));
-    // Lit by the grey sky they fall from.
-    v_colour = sky_radiance(vec3(0.0, 1.0, 0.0), false) * 1.4;
+    v_colour = u_colour;
     gl_Position = dist < u_near_m ? vec4(2.0, 2.0, 2.0, 1.0) : u_view_proj * vec4(p, 1.0);
 }
