@@ -54,10 +54,13 @@ TEST(Weather, RainBringsCloudAndWetsTheRoadOverTime) {
         last_cloud = w.cloud_cover();
         expect_bounded(w);
     }
-    EXPECT_EQ(w.rain_rate(), 1.0f);  // settled on the target, not creeping towards it
-    EXPECT_EQ(w.cloud_cover(), 1.0f);
+    EXPECT_NEAR(w.rain_rate(), 1.0f, 0.01f);
+    EXPECT_NEAR(w.cloud_cover(), 1.0f, 0.01f);
     EXPECT_GT(w.road_wetness(), 0.95f);
     EXPECT_LT(w.sunlight(), 0.3f);
+    run(w, 1.0f, 20.0f);
+    EXPECT_EQ(w.rain_rate(), 1.0f);  // settled on the target, not creeping towards it
+    EXPECT_EQ(w.cloud_cover(), 1.0f);
 }
 
 TEST(Weather, AfterTheRainTheSkyClearsAndTheRoadDriesSlowly) {
@@ -65,10 +68,11 @@ TEST(Weather, AfterTheRainTheSkyClearsAndTheRoadDriesSlowly) {
     EXPECT_EQ(w.cloud_cover(), 1.0f);
     EXPECT_EQ(w.road_wetness(), 1.0f);  // a level that opens in a downpour opens soaked
     run(w, 0.0f, 10.0f);
-    EXPECT_EQ(w.rain_rate(), 0.0f);  // stopped, exactly: nothing falls any more
+    EXPECT_LT(w.rain_rate(), 0.05f);
     EXPECT_GT(w.road_wetness(), 0.7f);  // still wet ten seconds on
     EXPECT_LT(w.cloud_cover(), 0.6f);
     run(w, 0.0f, 60.0f);
+    EXPECT_EQ(w.rain_rate(), 0.0f);  // stopped, exactly: nothing falls any more
     EXPECT_EQ(w.road_wetness(), 0.0f);
     EXPECT_LT(w.cloud_cover(), 0.01f);
     EXPECT_GT(w.sunlight(), 0.99f);
@@ -111,7 +115,8 @@ TEST(Weather, TheWorldStepsItFromThePlayersKeysAndHashesIt) {
         step(b, t == 10 || t == 12);
     }
     const Weather& wa = a.get<Weather>();
-    EXPECT_EQ(wa.rain_rate(), 0.5f);
+    EXPECT_GT(wa.rain_rate(), 0.4f);  // nearly there after four seconds
+    EXPECT_LT(wa.rain_rate(), 0.5f);
     EXPECT_GT(wa.cloud_cover(), 0.5f);
     EXPECT_GT(wa.road_wetness(), 0.1f);
     EXPECT_EQ(a.hash().world, b.hash().world);
