@@ -3,6 +3,7 @@
 #include "effects/energy/EnergyLightPass.h"
 #include "effects/energy/EnergyPass.h"
 #include "effects/rain/RainPass.h"
+#include "effects/rain/RainStreakPass.h"
 #include "effects/fluid/FluidPass.h"
 #include "effects/dust/DustPass.h"
 #include "effects/scene/EnvironmentPass.h"
@@ -29,6 +30,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     passes.push_back(std::make_unique<WaterPass>());
     passes.push_back(std::make_unique<FluidPass>());
     passes.push_back(std::make_unique<EnergyPass>());  // additive, stops at the water's depth too
+    passes.push_back(std::make_unique<RainStreakPass>());  // under the windshield
     passes.push_back(std::make_unique<RainPass>());  // refracts everything before it
     passes.push_back(std::make_unique<TonemapPass>());
     passes.push_back(std::make_unique<FxaaPass>());  // at the scene's size: before the upscale, fewer pixels

@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 
 #include "effects/gl/DebugGroup.h"
-#include "sim/player/Player.h"
 
 namespace effects {
 
@@ -43,12 +42,9 @@ void Renderer::render(const sim::World& world, RenderOutput output, const FrameP
         resources_.targets.resize(width, height);
         for (auto& p : passes_) p->resize(width, height);
     }
-    // Rain brings cloud: the sun weakens and the sky greys.
-    float rain = world.get<sim::Player>().rain_intensity();
-    SkyState& sky = resources_.lighting.sky;
-    sky.sun_dir = sun_dir_;
-    sky.sun_radiance = glm::vec3(3.2f, 3.0f, 2.7f) * (1.0f - 0.75f * rain);
-    sky.sky_intensity = 1.0f - 0.45f * rain;
+    // The sim's weather, once for the frame.
+    resources_.lighting.sky.sun_dir = sun_dir_;
+    resources_.lighting.set_weather(weather_look(world));
 
     Camera camera = make_camera(poses.camera, float(output.width) / float(output.height));
     FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds, poses};

@@ -19,6 +19,7 @@
 #include "effects/energy/EnergyPass.h"
 #include "effects/fluid/FluidPass.h"
 #include "effects/rain/RainPass.h"
+#include "effects/rain/RainStreakPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/FxaaPass.h"
 #include "effects/scene/OpaquePass.h"
@@ -44,10 +45,11 @@ enum StagePass : unsigned {
     kWaterPass = 1u << 7,
     kFluidPass = 1u << 8,
     kEnergyPass = 1u << 9,
-    kRainPass = 1u << 10,
-    kTonemapPass = 1u << 11,
-    kUpscalePass = 1u << 12,
-    kFxaaPass = 1u << 13,
+    kRainStreakPass = 1u << 10,
+    kRainPass = 1u << 11,
+    kTonemapPass = 1u << 12,
+    kUpscalePass = 1u << 13,
+    kFxaaPass = 1u << 14,
 };
 using StagePasses = unsigned;
 // The lit opaque scene: sky, shadows and sky occlusion for the terrain and props.
@@ -67,6 +69,7 @@ inline StagePass stage_pass_of(const effects::Pass& p) {
     if (dynamic_cast<const effects::WaterPass*>(&p)) return kWaterPass;
     if (dynamic_cast<const effects::FluidPass*>(&p)) return kFluidPass;
     if (dynamic_cast<const effects::EnergyPass*>(&p)) return kEnergyPass;
+    if (dynamic_cast<const effects::RainStreakPass*>(&p)) return kRainStreakPass;
     if (dynamic_cast<const effects::RainPass*>(&p)) return kRainPass;
     if (dynamic_cast<const effects::TonemapPass*>(&p)) return kTonemapPass;
     if (dynamic_cast<const effects::UpscalePass*>(&p)) return kUpscalePass;
@@ -115,7 +118,7 @@ public:
                  stage_quality(options)},
           output_(width_, height_) {
         // The level's sun, as the game's renderer sets it; its radiance and the sky's stay
-        // at their clear-day defaults (the renderer dims them in rain).
+        // at their clear-day defaults (the renderer sets the weather's; a test may too).
         scene_.lighting.sky.sun_dir = glm::normalize(session_.world->level().sun_direction);
         scene_.targets.resize(width_, height_);
         // The game's list is the one place that knows the order: the passes not held are

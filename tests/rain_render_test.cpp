@@ -233,7 +233,8 @@ float luminance(const game::ImageRGBA8& img, size_t k) {
 }
 
 TEST_F(RainRenderTest, DriversViewInTheRainShowsDropsOnTheGlassOnly) {
-    auto dry = parked_in_rain(0, 200), wet = parked_in_rain(4, 200);
+    // Long enough for the weather's shower to set in (it follows the keys with a lag).
+    auto dry = parked_in_rain(0, 400), wet = parked_in_rain(4, 400);
     ASSERT_GT(wet->world->get<sim::RainSim>().drops().size(), 100u);
     effects::Renderer dry_r(dry->level.scene, *dry->world), wet_r(wet->level.scene, *wet->world);
     game::FrameCapture a(kWidth, kHeight), b(kWidth, kHeight);

@@ -70,7 +70,7 @@ TEST(Hash, SeesEveryBitOfAFloat) {
 
 TEST(World, NamesItsSubsystemsInStepOrder) {
     sim::World w(make_test_level());
-    std::vector<std::string> expected = {"player", "car", "boat", "weapon", "objects", "camera"};
+    std::vector<std::string> expected = {"player", "weather", "car", "boat", "weapon", "objects", "camera"};
     EXPECT_EQ(w.subsystem_names(), expected);
     EXPECT_EQ(w.hash().parts.size(), expected.size());
 }

@@ -39,6 +39,7 @@ void OpaquePass::render(const FrameContext& frame) {
         p->set("u_eye", frame.camera.eye);
     }
     frame.scene.geometry.apply_ground(ground);
+    ground.set("u_wetness", frame.scene.lighting.weather.road_wetness);
     frame.scene.geometry.draw(objects, ground, frame.poses, SceneGeometry::Use::Shading,
                               Frustum(frame.camera.view_proj));
     glDisable(GL_CULL_FACE);

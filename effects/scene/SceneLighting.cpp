@@ -47,10 +47,18 @@ void SceneLighting::set_line_lights(std::span<const LineLight> lights) {
     line_light_count_ = count;
 }
 
+void SceneLighting::set_weather(const WeatherLook& look) {
+    weather = look;
+    sky.sun_radiance = kClearSunRadiance * look.sunlight;
+    sky.sky_intensity = look.sky_intensity;
+    sky.overcast = look.overcast;
+}
+
 void SceneLighting::apply_sky(const gl::Program& p) const {
     p.set("u_sun_dir", sky.sun_dir);
     p.set("u_sun_radiance", sky.sun_radiance);
     p.set("u_sky_intensity", sky.sky_intensity);
+    p.set("u_overcast", sky.overcast);
 }
 
 void SceneLighting::apply(const gl::Program& p) const {

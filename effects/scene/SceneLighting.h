@@ -9,13 +9,18 @@
 #include "effects/gl/Buffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
+#include "effects/scene/WeatherLook.h"
 
 namespace effects {
 
+// The sun's radiance on a clear day.
+inline constexpr glm::vec3 kClearSunRadiance{3.2f, 3.0f, 2.7f};
+
 struct SkyState {
     glm::vec3 sun_dir{0.4f, 0.8f, 0.3f};
-    glm::vec3 sun_radiance{3.2f, 3.0f, 2.7f};
+    glm::vec3 sun_radiance = kClearSunRadiance;
     float sky_intensity = 1.0f;
+    float overcast = 0.0f;  // 0 clear .. 1 a grey cloud deck hiding the sun
     bool operator==(const SkyState&) const = default;
 };
 
@@ -43,6 +48,9 @@ public:
     void apply(const gl::Program& program) const;
 
     SkyState sky;
+    WeatherLook weather;  // this frame's (set_weather)
+    // The frame's weather, and the sky under it: cloud greys the sky and weakens the sun.
+    void set_weather(const WeatherLook& look);
     glm::mat4 shadow_view_proj{1.0f};
     gl::Texture env_cube;
     gl::Texture shadow_map;

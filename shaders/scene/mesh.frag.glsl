@@ -21,6 +21,7 @@ uniform vec3 u_emissive;  // the material's own light: a cabin lining lit by the
 uniform vec4 u_roads[16];  // min.xz, max.xz
 uniform float u_shore_z;
 uniform float u_sea_level;
+uniform float u_wetness;  // the road's wetness from the sim's weather: 0 dry .. 1 running with water
 
 layout(location = 0) out vec4 o_colour;
 layout(location = 1) out vec4 o_normal;
@@ -37,7 +38,9 @@ float value_noise(vec2 p) {
     return mix(mix(hash12(i), hash12(i + vec2(1, 0)), u.x), mix(hash12(i + vec2(0, 1)), hash12(i + vec2(1, 1)), u.x), u.y);
 }
 
-vec3 ground_colour(vec3 p, out float roughness) {
+// `wet_roughness`: the roughness when soaked. Water fills a surface's pores: asphalt and
+// concrete turn nearly mirror-like and reflect the sky, grass only a little glossier.
+vec3 ground_colour(vec3 p, out float roughness, out float wet_roughness) {
     // GROUND_DETAIL 0 (a cheaper preset's): the coarse octave alone.
 #if defined(GROUND_DETAIL) && GROUND_DETAIL == 0
     float n = value_noise(p.xz * 0.35) * 0.6 + 0.2;
@@ -47,20 +50,25 @@ vec3 ground_colour(vec3 p, out float roughness) {
     vec3 grass = mix(vec3(0.10, 0.17, 0.05), vec3(0.16, 0.22, 0.07), n);
     vec3 c = grass;
     roughness = 0.95;
+    wet_roughness = 0.6;
     if (p.z > u_shore_z - 3.0) {  // the quay: concrete slabs
         float joints = step(0.96, fract(p.x / 4.0)) + step(0.93, fract((p.z - u_shore_z) / 3.0));
         c = mix(vec3(0.30, 0.29, 0.27), vec3(0.36, 0.35, 0.33), n) * (1.0 - 0.35 * min(joints, 1.0));
         roughness = 0.85;
+        wet_roughness = 0.3 - 0.15 * n;
     }
     if (p.y < u_sea_level - 0.3) {  // below the quay: weedy stone and sand
         c = mix(vec3(0.10, 0.11, 0.08), vec3(0.28, 0.25, 0.18), smoothstep(-2.0, -5.0, p.y)) * (0.8 + 0.4 * n);
         roughness = 0.9;
+        wet_roughness = 0.9;
     }
     for (int i = 0; i < ROAD_COUNT; ++i) {
         vec4 r = u_roads[i];
         if (p.x >= r.x && p.x <= r.z && p.z >= r.y && p.z <= r.w) {
             c = vec3(0.045, 0.045, 0.05) * (0.85 + 0.3 * n);
             roughness = 0.7;
+            // The worn hollows (the noise's high end) hold puddles: mirrors of the sky.
+            wet_roughness = mix(0.2, 0.03, smoothstep(0.5, 0.7, n));
             // Dashed centre line along the road's long axis.
             bool along_x = (r.z - r.x) > (r.w - r.y);
             float centre = along_x ? abs(p.z - 0.5 * (r.y + r.w)) : abs(p.x - 0.5 * (r.x + r.z));
@@ -77,7 +85,11 @@ void main() {
     vec3 base = v_color.rgb * u_tint.rgb;
     float roughness = u_roughness;
 #ifdef GROUND
-    base = ground_colour(v_world_pos, roughness);
+    float wet_roughness;
+    base = ground_colour(v_world_pos, roughness, wet_roughness);
+    // Wet: darker (the water film lets less light scatter back out) and glossier.
+    base *= 1.0 - 0.5 * u_wetness;
+    roughness = mix(roughness, wet_roughness, u_wetness);
 #endif
     vec3 c = shade_surface(base, roughness, u_metallic, v_world_pos, n, u_eye) + u_emissive;
     o_colour = vec4(apply_fog(c, v_world_pos, u_eye), 1.0);

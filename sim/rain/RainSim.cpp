@@ -10,6 +10,7 @@
 #include "sim/core/NumberText.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Car.h"
+#include "sim/weather/Weather.h"
 #include "sim/world/World.h"
 
 namespace sim {
@@ -104,7 +105,8 @@ RainForces RainSim::forces_for(float speed_mps, glm::vec2 accel_body_mps2, glm::
 void RainSim::step(StepContext& ctx) {
     const Player* player = ctx.world.find<Player>();
     const Car* car = ctx.world.find<Car>();
-    const float intensity = player ? player->rain_intensity() : 0.0f;
+    const Weather* weather = ctx.world.find<Weather>();
+    const float intensity = weather ? weather->rain_rate() : 0.0f;
     const WiperMode wipers = player ? player->wipers() : WiperMode::Off;
     RainForces forces = forces_for(0.0f, glm::vec2(0.0f), glm::vec3(0.0f, -kGravity, 0.0f));
     float speed = 0.0f;

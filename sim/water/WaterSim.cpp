@@ -7,8 +7,8 @@
 
 #include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
-#include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
+#include "sim/weather/Weather.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/World.h"
 
@@ -223,7 +223,7 @@ void WaterSim::step(StepContext& ctx) {
     splashes_.clear();
     ripples_.clear();
     World& world = ctx.world;
-    if (const Player* player = world.find<Player>()) rain(player->rain_intensity());
+    if (const Weather* weather = world.find<Weather>()) rain(weather->rain_rate());
     second_splashes();
     for (const WaterEntry& e : world.events().water_entries) impact(e, ctx.tick);
     if (const Boat* b = world.find<Boat>()) boat(*b, ctx.tick);

@@ -10,6 +10,7 @@
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
 #include "sim/water/WaterSim.h"
+#include "sim/weather/Weather.h"
 #include "sim/weapon/Weapon.h"
 #include "sim/world/World.h"
 
@@ -18,6 +19,8 @@ namespace sim {
 void add_standard_subsystems(World& world) {
     const LevelDesc& level = world.level();
     world.add(std::make_unique<Player>(level.rain_intensity));
+    // Right after the player: the rain, the water and the renderer read this tick's weather.
+    world.add(std::make_unique<Weather>(level.rain_intensity));
     world.add(std::make_unique<Car>(level.car_spawn));
     world.add(std::make_unique<Boat>(level.boat_spawn));
     world.add(std::make_unique<Weapon>(level.seed));
