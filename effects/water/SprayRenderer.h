@@ -14,7 +14,7 @@ namespace effects {
 struct SprayLook {
     float min_pixels = 1.5f;  // smallest drawn diameter; smaller drops spread their light over it
     float blur_m = 0.02f;     // the eye's blur circle: drops near it are soft discs this wide
-    float opacity = 0.6f;
+    float opacity = 0.7f;
 };
 
 class SprayRenderer {

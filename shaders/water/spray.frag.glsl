@@ -8,6 +8,6 @@ void main() {
     float d2 = dot(v_corner, v_corner);
     if (d2 >= 1.0) discard;
     float w = 1.0 - d2;
-    float a = v_alpha * w * w * w;
+    float a = v_alpha * w * w;
     o_colour = vec4(v_colour * a, a);
 }

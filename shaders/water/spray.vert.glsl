@@ -29,7 +29,7 @@ void main() {
     float drawn = max(max(r, 0.5 * u_blur_m), 0.5 * u_min_pixels * u_pixel_m * dist);
     float coverage = r * r / (drawn * drawn);
     // Drops within a metre of the eye fade out rather than fill the screen.
-    v_alpha = u_opacity * max(coverage, 0.05) * smoothstep(0.6, 1.6, dist);
+    v_alpha = u_opacity * max(coverage, 0.1) * smoothstep(0.6, 1.6, dist);
 
     vec3 d = normalize(p - u_eye);
     float toward = max(dot(d, u_sun_dir), 0.0);

@@ -183,6 +183,7 @@ void SplashSheet::hide(size_t idx, const WaveGrid& grid, float sea_level_m) {
 
 void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples) {
     torn_.clear();
+    tore_off_ = 0;
     if (flying_ == 0) return;  // nothing to show: hidden vertices need not follow
     const float g = p_.gravity_mps2;
     for (size_t idx = 0; idx < airborne_.size(); ++idx) {
@@ -229,6 +230,7 @@ void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::v
         // A peak past its apex pinches off: the jet's top falls apart into drops.
         if (!held || ((edge || peak) && longest2 > rim2) || (peak && vel_[idx].y < 0.0f)) tearing_.push_back(idx);
     }
+    tore_off_ = int(tearing_.size());
     for (size_t idx : tearing_) {
         if (bead(pos_[idx]) % uint32_t(p_.torn_drop_share) == 0) torn_.push_back({pos_[idx], vel_[idx]});
         hide(idx, grid, sea_level_m);

@@ -130,6 +130,7 @@ public:
     // follow the surface while the sheet is active.
     void step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples);
     const std::vector<TornOff>& torn() const { return torn_; }  // in the last step, in index order
+    int tore_off() const { return tore_off_; }  // vertices that tore off in the last step, drops or not
 
 private:
     void launch(size_t idx, glm::vec3 velocity, const WaveGrid& grid, float sea_level_m);
@@ -142,6 +143,7 @@ private:
     std::vector<uint8_t> airborne_;
     int flying_ = 0;
     std::vector<TornOff> torn_;
+    int tore_off_ = 0;
     std::vector<size_t> tearing_;  // scratch
 };
 
