@@ -1,10 +1,12 @@
 // The fluid pass on a real headless context: the tank on a small level, seen through
 // (refracted, tinted), its work confined to the tank's rectangle, a stone's splash
-// drawn as its own layer, bad smoothing settings refused, and a close-up through the
+// drawn as its own layer, a splash cloud drawn as a soft layer whose opacity grows with
+// its density, bad smoothing settings refused, and a close-up through the
 // harbour's tank after a stone that matches its golden in tests/data/fluid
 // (SPINDRIFT_UPDATE_GOLDENS=1 rewrites it). Set SPINDRIFT_FLUID_PNG_DIR to write the
 // frames as PNGs.
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -203,6 +205,78 @@ TEST_F(FluidRenderTest, AStoneSplashesDropsThatAreDrawnAsTheirOwnLayer) {
     ASSERT_GT(drops_on_screen, 10);
     // Most drops show; some are hidden behind the body or each other.
     EXPECT_GT(drops_seen, drops_on_screen / 2) << drops_seen << " of " << drops_on_screen;  // 22 of 25 here
+}
+
+// A ball of `count` splash drops of radius r, on a fixed lattice (the same ball, denser).
+std::vector<sim::FluidEllipsoid> splash_ball(glm::vec3 centre, float ball_m, int count, float r) {
+    std::vector<sim::FluidEllipsoid> out;
+    for (int k = 0; k < count; ++k) {
+        // Golden-angle spiral over the sphere, at radii filling the ball evenly.
+        const float f = (float(k) + 0.5f) / float(count);
+        const float y = 1.0f - 2.0f * f, ring = std::sqrt(std::max(0.0f, 1.0f - y * y));
+        const float phi = 2.39996323f * float(k), depth = std::cbrt(float((k * 7) % count + 1) / float(count));
+        sim::FluidEllipsoid e;
+        e.centre = centre + ball_m * depth * glm::vec3(ring * std::cos(phi), y, ring * std::sin(phi));
+        e.axis[0] = {r, 0, 0};
+        e.axis[1] = {0, r, 0};
+        e.axis[2] = {0, 0, r};
+        out.push_back(e);
+    }
+    return out;
+}
+
+// The splash is a soft layer, not a scatter of dots: a sparse cloud of drops shows as
+// faint, intermediate pixels (none near white), and the same cloud denser is more
+// opaque over the same area, its thickness target holding more water.
+TEST_F(FluidRenderTest, ASplashCloudIsASoftLayerWhoseOpacityGrowsWithItsDensity) {
+    effects::FluidView base;
+    ASSERT_TRUE(effects::gather_fluid_view(stage_->world(), base));
+    base.splash.clear();
+    const game::ImageRGBA8 bare = render(true, &base);
+    const glm::vec3 centre(24.1f, 1.85f, 29.2f);  // above the liquid, in front of the glass
+    auto render_cloud = [&](int count, double& thickness) {
+        effects::FluidView v = base;
+        v.splash = splash_ball(centre, 0.18f, count, 0.03f);
+        game::ImageRGBA8 img = render(true, &v);
+        const effects::gl::Texture& t = fluid_pass().splash_thickness();
+        std::vector<float> texels(size_t(t.width()) * size_t(t.height()));
+        glGetTextureImage(t.id(), 0, GL_RED, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+        thickness = 0.0;
+        for (float x : texels) thickness += double(x);
+        return img;
+    };
+    double sparse_t = 0.0, dense_t = 0.0;
+    const game::ImageRGBA8 sparse = render_cloud(24, sparse_t);
+    const game::ImageRGBA8 dense = render_cloud(240, dense_t);
+    maybe_write_png("splash_cloud_sparse", sparse);
+    maybe_write_png("splash_cloud_dense", dense);
+    EXPECT_GT(dense_t, 5.0 * sparse_t) << sparse_t << " against " << dense_t;
+
+    // Brightening over the cloud's square on screen (image rows are top-down).
+    const glm::vec4 c = camera_.view_proj * glm::vec4(centre, 1.0f);
+    const glm::ivec2 mid(glm::floor((glm::vec2(c) / c.w * 0.5f + 0.5f) * glm::vec2(kWidth, kHeight)));
+    const int half = 10;
+    double sparse_sum = 0.0, dense_sum = 0.0;
+    float sparse_max = 0.0f;
+    int dense_covered = 0;
+    for (int y = mid.y - half; y <= mid.y + half; ++y)
+        for (int x = mid.x - half; x <= mid.x + half; ++x) {
+            const int row = kHeight - 1 - y;
+            const float lift_sparse = glm::dot(pixel(sparse, x, row) - pixel(bare, x, row), glm::vec3(1.0f / 3.0f));
+            const float lift_dense = glm::dot(pixel(dense, x, row) - pixel(bare, x, row), glm::vec3(1.0f / 3.0f));
+            sparse_sum += lift_sparse;
+            dense_sum += lift_dense;
+            sparse_max = std::max(sparse_max, lift_sparse);
+            dense_covered += lift_dense > 8.0f ? 1 : 0;
+        }
+    const glm::vec3 white(255.0f);
+    const float room = glm::dot(white - pixel(bare, mid.x, kHeight - 1 - mid.y), glm::vec3(1.0f / 3.0f));
+    EXPECT_GT(sparse_sum, 0.0) << "the sparse cloud shows";
+    EXPECT_LT(sparse_max, 0.5f * room) << "no drop of the sparse cloud is a saturated dot";
+    // Ten times the water, well more light (opacity saturates as 1 - exp: 1.75x here).
+    EXPECT_GT(dense_sum, 1.4 * sparse_sum) << sparse_sum << " against " << dense_sum;
+    // The dense cloud covers its square as one layer, not a scatter of points.
+    EXPECT_GT(dense_covered, (2 * half + 1) * (2 * half + 1) / 2) << dense_covered;
 }
 
 TEST_F(FluidRenderTest, RefusesBadSmoothingSettings) {

@@ -54,7 +54,11 @@ FluidPass::FluidPass()
       narrow_range_(
           gl::Program::from_files("fluid.narrow_range", {"fluid/screen.vert.glsl", "fluid/narrow_range.frag.glsl"})),
       normals_(gl::Program::from_files("fluid.normals", {"fluid/screen.vert.glsl", "fluid/normals.frag.glsl"})),
-      refract_(gl::Program::from_files("fluid.refract", {"fluid/screen.vert.glsl", "fluid/refract.frag.glsl"})) {}
+      refract_(gl::Program::from_files("fluid.refract", {"fluid/screen.vert.glsl", "fluid/refract.frag.glsl"})),
+      splash_thickness_(gl::Program::from_files(
+          "fluid.splash_thickness", {"fluid/splash_thickness.vert.glsl", "fluid/splash_thickness.frag.glsl"})),
+      splash_layer_(
+          gl::Program::from_files("fluid.splash_layer", {"fluid/screen.vert.glsl", "fluid/splash_layer.frag.glsl"})) {}
 
 void FluidPass::register_params(ParamRegistry& params) {
     params.add("fluid", "absorption per m", &look_.absorption_per_m, 0.0f, 10.0f);
@@ -62,6 +66,8 @@ void FluidPass::register_params(ParamRegistry& params) {
     params.add("fluid", "plane sigma (radii)", &look_.plane_sigma_radii, 0.5f, 10.0f);
     params.add("fluid", "plane max move (radii)", &look_.plane_max_move_radii, 0.5f, 10.0f);
     params.add("fluid", "smoothing iterations", &smoothing_.iterations, 1, 64);
+    params.add("fluid", "splash opacity per m", &look_.splash_opacity_per_m, 0.0f, 100.0f);
+    params.add("fluid", "splash softness (px)", &look_.splash_soft_pixels, 0.5f, 4.0f);
 }
 
 void FluidPass::set_smoothing(const FluidSmoothing& smoothing) {
@@ -113,36 +119,38 @@ void FluidPass::resize_targets(int w, int h) {
     if (w == width_ && h == height_) return;
     width_ = w;
     height_ = h;
-    const char* names[2][2] = {{"fluid.body_front", "fluid.body_back"}, {"fluid.splash_front", "fluid.splash_back"}};
-    for (int g = 0; g < 2; ++g) {
-        front_[g] = depth_map(names[g][0], w, h);
-        back_[g] = depth_map(names[g][1], w, h);
-        depth_fbo_[g] = gl::Framebuffer::create(g == 0 ? "fluid.body_depths" : "fluid.splash_depths");
-        depth_fbo_[g].attach_colour(0, front_[g]);
-        depth_fbo_[g].attach_colour(1, back_[g]);
-        depth_fbo_[g].check_complete();
-    }
+    front_ = depth_map("fluid.body_front", w, h);
+    back_ = depth_map("fluid.body_back", w, h);
+    depth_fbo_ = gl::Framebuffer::create("fluid.body_depths");
+    depth_fbo_.attach_colour(0, front_);
+    depth_fbo_.attach_colour(1, back_);
+    depth_fbo_.check_complete();
     front_pp_[0] = depth_map("fluid.smooth_front_a", w, h);
     front_pp_[1] = depth_map("fluid.smooth_front_b", w, h);
     back_pp_[0] = depth_map("fluid.smooth_back_a", w, h);
     back_pp_[1] = depth_map("fluid.smooth_back_b", w, h);
     smooth_fbo_ = gl::Framebuffer::create("fluid.smooth");
-    const char* normal_names[4] = {"fluid.body_front_normal", "fluid.body_back_normal", "fluid.splash_front_normal",
-                                   "fluid.splash_back_normal"};
-    for (int k = 0; k < 4; ++k) {
+    const char* normal_names[2] = {"fluid.body_front_normal", "fluid.body_back_normal"};
+    for (int k = 0; k < 2; ++k) {
         normal_[k] = gl::Texture::create_2d(normal_names[k], GL_RGBA16F, w, h);
         normal_[k].set_filter(GL_NEAREST, GL_NEAREST);
     }
-    for (int g = 0; g < 2; ++g) {
-        normal_fbo_[g] = gl::Framebuffer::create(g == 0 ? "fluid.body_normals" : "fluid.splash_normals");
-        normal_fbo_[g].attach_colour(0, normal_[2 * g]);
-        normal_fbo_[g].attach_colour(1, normal_[2 * g + 1]);
-        normal_fbo_[g].check_complete();
-    }
+    normal_fbo_ = gl::Framebuffer::create("fluid.body_normals");
+    normal_fbo_.attach_colour(0, normal_[0]);
+    normal_fbo_.attach_colour(1, normal_[1]);
+    normal_fbo_.check_complete();
+    // Filtered: the layer reads it bilinearly at full resolution.
+    thickness_ = gl::Texture::create_2d("fluid.splash_thickness", GL_R16F, (w + kSplashScale - 1) / kSplashScale,
+                                        (h + kSplashScale - 1) / kSplashScale);
+    thickness_.set_filter(GL_LINEAR, GL_LINEAR);
+    thickness_.set_wrap(GL_CLAMP_TO_EDGE);
+    thickness_fbo_ = gl::Framebuffer::create("fluid.splash_thickness");
+    thickness_fbo_.attach_colour(0, thickness_);
+    thickness_fbo_.check_complete();
     background_ = gl::Texture::create_2d("fluid.background", GL_RGBA16F, w, h);
     background_.set_filter(GL_NEAREST, GL_NEAREST);
     shade_colour_id_ = 0;
-    smoothed_front_ = &front_[0];
+    smoothed_front_ = &front_;
 }
 
 glm::ivec4 FluidPass::screen_rect(const FrameContext& frame, const FluidView& view, int margin) const {
@@ -215,6 +223,56 @@ const gl::Texture* FluidPass::smooth(const gl::Texture& source, gl::Texture* pin
     return in;
 }
 
+void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
+    const Camera& cam = frame.camera;
+    const int s = kSplashScale;
+    const glm::ivec4 low(rect_.x / s, rect_.y / s, (rect_.z + s - 1) / s, (rect_.w + s - 1) / s);
+    const glm::vec2 low_size{float(thickness_.width()), float(thickness_.height())};
+
+    // Thickness: soft sprites added up at a sixteenth of the pixels.
+    thickness_fbo_.bind();
+    glViewport(0, 0, thickness_.width(), thickness_.height());
+    glScissor(low.x, low.y, low.z - low.x, low.w - low.y);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    upload(particles_[1], view.splash);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_[1].id());
+    splash_thickness_.use();
+    set_ivec4(splash_thickness_, "u_rect", low);
+    splash_thickness_.set("u_proj", cam.proj);
+    splash_thickness_.set("u_view", cam.view);
+    splash_thickness_.set("u_viewport", low_size);
+    splash_thickness_.set("u_soft_pixels", look_.splash_soft_pixels);
+    splash_thickness_.set("u_scale", s);
+    frame.scene.targets.depth().bind(kSceneDepthUnit);
+    splash_thickness_.set("u_scene_depth", int(kSceneDepthUnit));
+    smoothed_front_->bind(kMapUnit);
+    splash_thickness_.set("u_body_front", int(kMapUnit));
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glDrawArrays(GL_POINTS, 0, GLsizei(view.splash.size()));
+    glDisable(GL_PROGRAM_POINT_SIZE);
+
+    // The layer over the refracted liquid, premultiplied; the scene's alpha stays.
+    shade_fbo_.bind();
+    glViewport(0, 0, width_, height_);
+    glScissor(rect_.x, rect_.y, rect_.z - rect_.x, rect_.w - rect_.y);
+    const gl::Program& p = splash_layer_;
+    frame.scene.lighting.apply_sky(p);
+    p.use();
+    set_ivec4(p, "u_rect", rect_);
+    p.set("u_proj", cam.proj);
+    p.set("u_viewport", glm::vec2(float(width_), float(height_)));
+    p.set("u_view_to_world", glm::mat3(glm::inverse(cam.view)));
+    p.set("u_opacity_per_m", look_.splash_opacity_per_m);
+    thickness_.bind(kMapUnit);
+    p.set("u_thickness", int(kMapUnit));
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
+}
+
 void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
     const SceneTargets& t = frame.scene.targets;
     const Camera& cam = frame.camera;
@@ -256,21 +314,19 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
         ellipsoids_.set("u_scene_depth", int(kSceneDepthUnit));
         t.depth().bind(kSceneDepthUnit);
         const float far_front[4] = {1.0e6f, 0, 0, 0}, zero[4] = {0, 0, 0, 0};
-        for (int g = 0; g < 2; ++g) {
-            const auto& group_view = g == 0 ? view.body : view.splash;
-            depth_fbo_[g].bind();
-            glClearBufferfv(GL_COLOR, 0, far_front);
-            glClearBufferfv(GL_COLOR, 1, zero);
-            if (group_view.empty()) continue;
-            upload(particles_[g], group_view);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_[g].id());
+        depth_fbo_.bind();
+        glClearBufferfv(GL_COLOR, 0, far_front);
+        glClearBufferfv(GL_COLOR, 1, zero);
+        if (!view.body.empty()) {
+            upload(particles_[0], view.body);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, particles_[0].id());
             for (GLuint i = 0; i < 2; ++i) {
                 glEnablei(GL_BLEND, i);
                 glBlendFunci(i, GL_ONE, GL_ONE);
             }
             glBlendEquationi(0, GL_MIN);
             glBlendEquationi(1, GL_MAX);
-            glDrawArrays(GL_POINTS, 0, GLsizei(group_view.size()));
+            glDrawArrays(GL_POINTS, 0, GLsizei(view.body.size()));
             for (GLuint i = 0; i < 2; ++i) glDisablei(GL_BLEND, i);
         }
         glDisable(GL_PROGRAM_POINT_SIZE);
@@ -279,10 +335,9 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
     if (profiling_) times_.depth_ms = lap(clock);
 
     {
-        // The body only: splash drops stay round.
         gl::DebugGroup group("fluid.smoothing");
-        smoothed_front_ = smooth(front_[0], front_pp_, frame, radius);
-        smoothed_back_ = smooth(back_[0], back_pp_, frame, radius);
+        smoothed_front_ = smooth(front_, front_pp_, frame, radius);
+        smoothed_back_ = smooth(back_, back_pp_, frame, radius);
     }
     if (profiling_) times_.smoothing_ms = lap(clock);
 
@@ -294,12 +349,10 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
         normals_.set("u_viewport", viewport);
         normals_.set("u_front", 1);
         normals_.set("u_back", 2);
-        for (int g = 0; g < 2; ++g) {
-            normal_fbo_[g].bind();
-            (g == 0 ? *smoothed_front_ : front_[1]).bind(1);
-            (g == 0 ? *smoothed_back_ : back_[1]).bind(2);
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-        }
+        normal_fbo_.bind();
+        smoothed_front_->bind(1);
+        smoothed_back_->bind(2);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     if (profiling_) times_.normals_ms = lap(clock);
 
@@ -327,12 +380,9 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
         p.set("u_epsilon", 0.25f * radius);
         p.set("u_frame_width", 0.025f);
         p.set("u_probe", probe_ ? 1 : 0);
-        const gl::Texture* maps[8] = {smoothed_front_, smoothed_back_, &front_[1], &back_[1],
-                                      &normal_[0],     &normal_[1],    &normal_[2], &normal_[3]};
-        const char* names[8] = {"u_body_front",        "u_body_back",        "u_splash_front",
-                                "u_splash_back",       "u_body_front_normal", "u_body_back_normal",
-                                "u_splash_front_normal", "u_splash_back_normal"};
-        for (int k = 0; k < 8; ++k) {
+        const gl::Texture* maps[4] = {smoothed_front_, smoothed_back_, &normal_[0], &normal_[1]};
+        const char* names[4] = {"u_body_front", "u_body_back", "u_body_front_normal", "u_body_back_normal"};
+        for (int k = 0; k < 4; ++k) {
             maps[k]->bind(GLuint(1 + k));
             p.set(names[k], 1 + k);
         }
@@ -343,6 +393,12 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     if (profiling_) times_.refraction_ms = lap(clock);
+
+    if (!view.splash.empty()) {
+        gl::DebugGroup group("fluid.splash");
+        draw_splash(frame, view);
+    }
+    if (profiling_) times_.splash_ms = lap(clock);
 
     glDisable(GL_SCISSOR_TEST);
     glDepthMask(GL_TRUE);

@@ -1,8 +1,9 @@
 #pragma once
 // The fluid tank (docs/effects/fluid.md, "What is implemented"), after the water:
-// ellipsoid depth maps (front and back, body and splash), smoothing of the body's maps,
-// normals, and refraction through up to four surfaces over the scene's colour, then the
-// glass. Every step is scissored to the tank's screen rectangle.
+// ellipsoid depth maps of the body (front and back), their smoothing, normals, and
+// refraction through both surfaces over the scene's colour, then the glass; the splash
+// as a soft layer over it (gaussian sprites into a small thickness target). Every step
+// is scissored to the tank's screen rectangle.
 #include <glm/vec4.hpp>
 
 #include "effects/fluid/FluidSmoothing.h"
@@ -23,12 +24,16 @@ struct FluidLook {
     float plane_sigma_radii = 3.0f;    // plane fitting's depth weight, in particle radii
     float plane_max_move_radii = 3.0f; // larger moves keep the old depth
     float narrow_band_radii = 2.0f;
+    // The splash layer's opacity, 1 - exp(-k thickness): k per metre of water along the
+    // ray. A lone drop (about 2/3 of its radius thick at its centre) stays faint.
+    float splash_opacity_per_m = 14.0f;
+    float splash_soft_pixels = 1.2f;  // the least gaussian sigma, in thickness-target pixels
 };
 
 // Milliseconds per step of the last frame, with glFinish between steps (profiling only).
 struct FluidStageTimes {
-    double depth_ms = 0.0, smoothing_ms = 0.0, normals_ms = 0.0, refraction_ms = 0.0;
-    double total() const { return depth_ms + smoothing_ms + normals_ms + refraction_ms; }
+    double depth_ms = 0.0, smoothing_ms = 0.0, normals_ms = 0.0, refraction_ms = 0.0, splash_ms = 0.0;
+    double total() const { return depth_ms + smoothing_ms + normals_ms + refraction_ms + splash_ms; }
 };
 
 class FluidPass final : public Pass {
@@ -53,28 +58,35 @@ public:
     glm::ivec4 last_rect() const { return rect_; }
     const gl::Texture& body_front() const { return *smoothed_front_; }  // smoothed
     const gl::Texture& body_front_normal() const { return normal_[0]; }
+    // The splash's thickness (metres of water along the ray), 1/kSplashScale of the
+    // screen each way.
+    const gl::Texture& splash_thickness() const { return thickness_; }
+    static constexpr int kSplashScale = 4;
     FluidLook& look() { return look_; }
 
 private:
     void resize_targets(int width, int height);
     glm::ivec4 screen_rect(const FrameContext& frame, const FluidView& view, int margin) const;
     void upload(gl::Buffer& buffer, const std::vector<sim::FluidEllipsoid>& ellipsoids);
+    void draw_splash(const FrameContext& frame, const FluidView& view);
     const gl::Texture* smooth(const gl::Texture& source, gl::Texture* ping_pong, const FrameContext& frame,
                               float radius);
 
-    gl::Program ellipsoids_, plane_fit_, bilateral_, narrow_range_, normals_, refract_;
-    // [0] body, [1] splash: front and back depth maps and their framebuffer.
-    gl::Texture front_[2], back_[2];
-    gl::Framebuffer depth_fbo_[2];
-    gl::Texture front_pp_[2], back_pp_[2];  // smoothing ping-pong for the body's maps
+    gl::Program ellipsoids_, plane_fit_, bilateral_, narrow_range_, normals_, refract_, splash_thickness_,
+        splash_layer_;
+    // The body's front and back depth maps and their framebuffer.
+    gl::Texture front_, back_;
+    gl::Framebuffer depth_fbo_;
+    gl::Texture front_pp_[2], back_pp_[2];  // smoothing ping-pong
     gl::Framebuffer smooth_fbo_;
-    // Normals: [0] body front, [1] body back, [2] splash front, [3] splash back.
-    gl::Texture normal_[4];
-    gl::Framebuffer normal_fbo_[2];
+    gl::Texture normal_[2];  // [0] front, [1] back
+    gl::Framebuffer normal_fbo_;
+    gl::Texture thickness_;  // the splash's, low resolution
+    gl::Framebuffer thickness_fbo_;
     gl::Texture background_;
     gl::Framebuffer shade_fbo_;
     GLuint shade_colour_id_ = 0;
-    gl::Buffer particles_[2];
+    gl::Buffer particles_[2];  // [0] body, [1] splash
     const gl::Texture* smoothed_front_ = nullptr;
     const gl::Texture* smoothed_back_ = nullptr;
     int width_ = 0, height_ = 0;

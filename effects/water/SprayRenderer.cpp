@@ -45,6 +45,7 @@ void SprayRenderer::draw(const FrameContext& frame, std::span<const SprayDrop> d
     // World size of one pixel one metre from the eye.
     program_.set("u_pixel_m", 2.0f / (cam.proj[1][1] * float(t.height())));
     program_.set("u_min_pixels", look.min_pixels);
+    program_.set("u_blur_m", look.blur_m);
     program_.set("u_opacity", look.opacity);
 
     // Premultiplied "over": drops are all nearly the same colour, so order hardly

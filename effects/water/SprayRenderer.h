@@ -1,6 +1,7 @@
 #pragma once
 // Spray droplets as camera-facing sprites: soft round discs, lit by the sky and the
-// sun (brighter looking towards it), blended over the scene without writing depth.
+// sun (brighter looking towards it), blended over the scene without writing depth;
+// blurred near the eye and faded within a metre of it.
 #include "effects/gl/Buffer.h"
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
@@ -12,6 +13,7 @@ namespace effects {
 
 struct SprayLook {
     float min_pixels = 1.5f;  // smallest drawn diameter; smaller drops spread their light over it
+    float blur_m = 0.02f;     // the eye's blur circle: drops near it are soft discs this wide
     float opacity = 0.7f;
 };
 

@@ -15,6 +15,7 @@ void WaterPass::register_params(ParamRegistry& params) {
     params.add("water", "triangle size px", &look_.triangle_px, 2.0f, 32.0f);
     params.add("water", "spray opacity", &look_.spray.opacity, 0.0f, 1.0f);
     params.add("water", "spray min pixels", &look_.spray.min_pixels, 0.5f, 4.0f);
+    params.add("water", "spray blur (m)", &look_.spray.blur_m, 0.0f, 0.1f);
 }
 
 void WaterPass::render(const FrameContext& frame) {

@@ -1,16 +1,16 @@
 #version 450 core
 #include "common/sky.glsl"
 #include "fluid/common.glsl"
-// Refraction through up to four liquid surfaces (seed 4.4): the nearer of the body and
-// the splash layer is crossed first (front, back), then the other. At each surface a
-// Schlick-Fresnel share is reflected (the background along the mirrored ray) and the
-// rest refracted (Snell) and traced to the next surface with the secant method; the
-// path inside the liquid is absorbed (Beer-Lambert). What leaves the last surface sees
-// the scene behind (u_background: the fluid pass's own copy of the scene colour around
-// the tank, water included), or the sky off screen. Then the tank's glass: a faint
-// reflection and its steel edges.
-uniform sampler2D u_body_front, u_body_back, u_splash_front, u_splash_back;
-uniform sampler2D u_body_front_normal, u_body_back_normal, u_splash_front_normal, u_splash_back_normal;
+// Refraction through the liquid body's two surfaces (seed 4.4; the splash is a soft
+// layer drawn over this, splash_layer.frag.glsl). At each surface a Schlick-Fresnel
+// share is reflected (the background along the mirrored ray) and the rest refracted
+// (Snell) and traced to the next surface with the secant method; the path inside the
+// liquid is absorbed (Beer-Lambert). What leaves the back surface sees the scene behind
+// (u_background: the fluid pass's own copy of the scene colour around the tank, water
+// included), or the sky off screen. Then the tank's glass: a faint reflection and its
+// steel edges.
+uniform sampler2D u_body_front, u_body_back;
+uniform sampler2D u_body_front_normal, u_body_back_normal;
 uniform sampler2D u_background;   // the scene's colour before the fluid
 uniform sampler2D u_scene_depth;  // window depth
 uniform ivec4 u_background_rect;  // where u_background holds the scene
@@ -52,26 +52,18 @@ vec3 background(vec3 p, vec3 d) {
     return texelFetch(u_background, ivec2(px), 0).rgb;
 }
 
-// Surfaces: 0 body front, 1 body back, 2 splash front, 3 splash back (samplers cannot
-// be chosen with ?:, so a switch picks them).
-const int kBodyFront = 0, kBodyBack = 1, kSplashFront = 2, kSplashBack = 3;
+// Surfaces: 0 the body's front, 1 its back (samplers cannot be chosen with ?:, so a
+// branch picks them).
+const int kBodyFront = 0, kBodyBack = 1;
 
 float depth_of(int surface, ivec2 p) {
-    switch (surface) {
-        case kBodyFront: return texelFetch(u_body_front, p, 0).r;
-        case kBodyBack: return texelFetch(u_body_back, p, 0).r;
-        case kSplashFront: return texelFetch(u_splash_front, p, 0).r;
-        default: return texelFetch(u_splash_back, p, 0).r;
-    }
+    if (surface == kBodyFront) return texelFetch(u_body_front, p, 0).r;
+    return texelFetch(u_body_back, p, 0).r;
 }
 
 vec3 normal_of(int surface, ivec2 p) {
-    switch (surface) {
-        case kBodyFront: return texelFetch(u_body_front_normal, p, 0).xyz;
-        case kBodyBack: return texelFetch(u_body_back_normal, p, 0).xyz;
-        case kSplashFront: return texelFetch(u_splash_front_normal, p, 0).xyz;
-        default: return texelFetch(u_splash_back_normal, p, 0).xyz;
-    }
+    if (surface == kBodyFront) return texelFetch(u_body_front_normal, p, 0).xyz;
+    return texelFetch(u_body_back_normal, p, 0).xyz;
 }
 
 float map_at(int surface, vec3 p, out bool valid) {
@@ -147,65 +139,49 @@ void main() {
     vec3 ray = view_ray(gl_FragCoord.xy);
     vec3 base = texelFetch(u_background, pix, 0).rgb;
     float scene_z = scene_distance(gl_FragCoord.xy);
-    float zb = texelFetch(u_body_front, pix, 0).r, zs = texelFetch(u_splash_front, pix, 0).r;
-    bool hb = has_depth(zb), hs = has_depth(zs);
+    float zb = texelFetch(u_body_front, pix, 0).r;
+    bool hb = has_depth(zb);
     vec3 colour = base;
-    if (hb || hs) {
-        bool body_first = hb && (!hs || zb <= zs);
+    if (hb) {
         vec3 dir = normalize(ray);
-        vec3 pos = ray * (body_first ? zb : zs);
+        vec3 pos = ray * zb;
         vec3 acc = vec3(0.0), thr = vec3(1.0);
-        bool open = true;
-        for (int g = 0; g < 2 && open; ++g) {
-            bool body = (g == 0) == body_first;
-            int front = body ? kBodyFront : kSplashFront, back = body ? kBodyBack : kSplashBack;
-            if (g == 1) {
-                if (!(body ? hb : hs)) break;
-                float t;
-                float guess = ((body ? zb : zs) + pos.z) / max(-dir.z, 0.25);
-                if (!secant(front, pos, dir, guess, t)) break;
-                pos += dir * t;
-            }
-            // Into the liquid.
-            vec3 n = normal_at(front, pos, -dir);
-            if (dot(n, dir) > 0.0) n = -n;
-            float f = schlick(dot(-dir, n));
-            acc += thr * f * background(pos, reflect(dir, n));
-            thr *= 1.0 - f;
-            dir = refract(dir, n, 1.0 / u_ior);
-            // Through it to its back surface.
-            bool valid;
-            float back_z = map_at(back, pos, valid);
-            float t;
-            float guess = valid ? max(back_z + pos.z, 0.0) / max(-dir.z, 0.25) : u_epsilon;
-            bool found = secant(back, pos, dir, guess, t);
-            // Not converged (the ray left the map or the search oscillated): its last
-            // estimate may be anywhere, so the ray leaves where the back surface lies
-            // behind the entry point.
-            if (!found) t = guess;
-            pos += dir * t;
-            thr *= exp(-u_absorption * t);
-            // Out of it; total internal reflection sends the ray back in, which this
-            // screen-space trace follows no further: it sees the mirrored background.
-            vec3 nb = -normal_at(back, pos, dir);
-            if (dot(nb, dir) > 0.0) nb = -nb;
-            vec3 out_dir = refract(dir, nb, u_ior);
-            if (out_dir == vec3(0.0)) {
-                acc += thr * background(pos, reflect(dir, nb));
-                thr = vec3(0.0);
-                open = false;
-                break;
-            }
+        // Into the liquid.
+        vec3 n = normal_at(kBodyFront, pos, -dir);
+        if (dot(n, dir) > 0.0) n = -n;
+        float f = schlick(dot(-dir, n));
+        acc += thr * f * background(pos, reflect(dir, n));
+        thr *= 1.0 - f;
+        dir = refract(dir, n, 1.0 / u_ior);
+        // Through it to its back surface.
+        bool valid;
+        float back_z = map_at(kBodyBack, pos, valid);
+        float t;
+        float guess = valid ? max(back_z + pos.z, 0.0) / max(-dir.z, 0.25) : u_epsilon;
+        bool found = secant(kBodyBack, pos, dir, guess, t);
+        // Not converged (the ray left the map or the search oscillated): its last
+        // estimate may be anywhere, so the ray leaves where the back surface lies
+        // behind the entry point.
+        if (!found) t = guess;
+        pos += dir * t;
+        thr *= exp(-u_absorption * t);
+        // Out of it; total internal reflection sends the ray back in, which this
+        // screen-space trace follows no further: it sees the mirrored background.
+        vec3 nb = -normal_at(kBodyBack, pos, dir);
+        if (dot(nb, dir) > 0.0) nb = -nb;
+        vec3 out_dir = refract(dir, nb, u_ior);
+        if (out_dir == vec3(0.0)) {
+            colour = acc + thr * background(pos, reflect(dir, nb));
+        } else {
             f = schlick(dot(out_dir, -nb));
             acc += thr * f * background(pos, reflect(dir, nb));
             thr *= 1.0 - f;
-            dir = out_dir;
-            if (u_probe == 1 && body) {
-                o_colour = vec4(dir, found ? 1.0 : 0.0);
+            if (u_probe == 1) {
+                o_colour = vec4(out_dir, found ? 1.0 : 0.0);
                 return;
             }
+            colour = acc + thr * background(pos, out_dir);
         }
-        colour = acc + thr * background(pos, dir);
     } else if (u_probe == 1) {
         o_colour = vec4(0.0);
         return;
@@ -217,7 +193,7 @@ void main() {
     if (tank_hit(ray, t_near, t_far) && t_near > 0.0 && t_near < scene_z) {
         vec3 p_near = (u_view_to_tank * vec4(ray * t_near, 1.0)).xyz;
         vec3 d = normalize(ray);
-        if (!(hb || hs) && t_far < scene_z && edge((u_view_to_tank * vec4(ray * t_far, 1.0)).xyz, t_far) > 0.5)
+        if (!hb && t_far < scene_z && edge((u_view_to_tank * vec4(ray * t_far, 1.0)).xyz, t_far) > 0.5)
             colour = mix(colour, vec3(0.05, 0.055, 0.06), 0.8);
         float cos_i = abs(d.z);  // about the view axis: the glass is thin and the mirror faint
         float f = 0.04 + 0.2 * pow(1.0 - cos_i, 5.0);

@@ -1,6 +1,7 @@
 #include "sim/water/SplashSheet.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,17 @@ namespace sim {
 namespace {
 
 bool positive(float v) { return std::isfinite(v) && v > 0.0f; }
+
+// Which torn vertices gather their neighbours' film into a drop: a hash of where the
+// vertex is (deterministic, and no regular pattern over the sheet).
+uint32_t bead(glm::vec3 p) {
+    uint32_t h = std::bit_cast<uint32_t>(p.x) * 0x9E3779B1u ^ std::bit_cast<uint32_t>(p.z) * 0x85EBCA77u ^
+                 std::bit_cast<uint32_t>(p.y) * 0xC2B2AE3Du;
+    h ^= h >> 15;
+    h *= 0x2C1B3C6Du;
+    h ^= h >> 12;
+    return h;
+}
 
 }  // namespace
 
@@ -37,6 +49,9 @@ SplashSheet::SplashSheet(const SplashSheetParams& params) : p_(params), n_(param
     if (!std::isfinite(p_.tear_stretch) || p_.tear_stretch < 1.0f)
         refuse("tear_stretch must be >= 1, got " + num(p_.tear_stretch));
     if (!positive(p_.torn_drop_radius_m)) refuse("torn_drop_radius_m must be positive, got " + num(p_.torn_drop_radius_m));
+    if (p_.torn_drop_share < 1 || p_.torn_drop_share > 64)
+        refuse("torn_drop_share must be 1..64, got " + std::to_string(p_.torn_drop_share));
+    if (!(p_.bow_lift >= 0.0f && p_.bow_lift <= 1.0f)) refuse("bow_lift must be in [0, 1], got " + num(p_.bow_lift));
     if (!std::isfinite(p_.rim_break_stretch) || p_.rim_break_stretch < 1.0f)
         refuse("rim_break_stretch must be >= 1, got " + num(p_.rim_break_stretch));
     const size_t count = size_t(n_) * size_t(n_);
@@ -121,7 +136,7 @@ int SplashSheet::first_splash(float object_radius_m, float momentum_kgmps, Rng& 
             // Seed: alpha*s along an axis, alpha*s/2 per axis on the diagonals; in
             // between, the same rule blended (the L1-normalised offset).
             const float l1 = float(std::abs(di) + std::abs(dj));
-            glm::vec3 v(a * float(di) / l1, a, a * float(dj) / l1);
+            glm::vec3 v(a * float(di) / l1, ahead ? a * p_.bow_lift : a, a * float(dj) / l1);
             v.x += carry_xz.x;
             v.z += carry_xz.y;
             launch(idx, v, grid, sea_level_m);
@@ -168,6 +183,7 @@ void SplashSheet::hide(size_t idx, const WaveGrid& grid, float sea_level_m) {
 
 void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples) {
     torn_.clear();
+    tore_off_ = 0;
     if (flying_ == 0) return;  // nothing to show: hidden vertices need not follow
     const float g = p_.gravity_mps2;
     for (size_t idx = 0; idx < airborne_.size(); ++idx) {
@@ -214,8 +230,9 @@ void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::v
         // A peak past its apex pinches off: the jet's top falls apart into drops.
         if (!held || ((edge || peak) && longest2 > rim2) || (peak && vel_[idx].y < 0.0f)) tearing_.push_back(idx);
     }
+    tore_off_ = int(tearing_.size());
     for (size_t idx : tearing_) {
-        torn_.push_back({pos_[idx], vel_[idx]});
+        if (bead(pos_[idx]) % uint32_t(p_.torn_drop_share) == 0) torn_.push_back({pos_[idx], vel_[idx]});
         hide(idx, grid, sea_level_m);
     }
     // Hidden vertices next to airborne ones follow the surface: they shape the normals

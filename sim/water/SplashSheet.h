@@ -35,7 +35,15 @@ struct SplashSheetParams {
     // off the film (the renderer drops triangles stretched as far): it leaves the
     // sheet as a droplet of torn_drop_radius_m, a scrap of film larger than the spray.
     float tear_stretch = 12.0f;
-    float torn_drop_radius_m = 0.03f;
+    // A scrap of film (d x d, a few millimetres thick) holds a drop about a centimetre
+    // across, and a breaking rim gathers into beads a few film widths apart (Plateau-
+    // Rayleigh): one torn vertex in torn_drop_share flies on as a drop, the rest of the
+    // film goes with it.
+    float torn_drop_radius_m = 0.012f;
+    int torn_drop_share = 3;
+    // A moving bow's sheet peels off lower, at about 40 degrees: its launch's vertical part
+    // is this share of the crown's (a thrown object's crown rises at 45 degrees).
+    float bow_lift = 0.8f;
     // The film thins fastest at its free edge (the crown's rim) and at a peak (the jet's
     // top): a vertex there whose longest bond to an airborne neighbour has stretched past
     // rim_break_stretch spacings breaks off as a droplet too, so the rim sheds drops and
@@ -100,7 +108,7 @@ public:
     // axis and alpha*s/2 per axis on the diagonals (s = launch_speed(M V)); the skirt
     // rings outside it the same, slowed linearly towards the outermost. With `ahead`
     // (unit xz direction of a moving object) vertices behind the centre are left
-    // alone (seed 4.2.4, the bow spray) and `carry_xz` (the object's velocity) is
+    // alone (seed 4.2.4, the bow spray), the lift is bow_lift of it, and `carry_xz` (the object's velocity) is
     // added, so the rule holds in the moving object's frame and the sheet stays
     // whole around the bow instead of stretching back along its path. Returns how
     // many vertices were launched.
@@ -117,10 +125,12 @@ public:
     // Ballistic flight under gravity; a vertex that falls back below the surface hides
     // again at its rest point and adds a Ripple where it fell, one that has torn off
     // (no airborne neighbour within tear_stretch, a thinned rim or peak past
-    // rim_break_stretch, or a peak past its apex) hides and is listed in torn(). Hidden vertices follow the
-    // surface while the sheet is active.
+    // rim_break_stretch, or a peak past its apex) hides, and one in torn_drop_share of
+    // those (picked by a hash of its position) is listed in torn(). Hidden vertices
+    // follow the surface while the sheet is active.
     void step(float dt, const WaveGrid& grid, float sea_level_m, std::vector<Ripple>& ripples);
     const std::vector<TornOff>& torn() const { return torn_; }  // in the last step, in index order
+    int tore_off() const { return tore_off_; }  // vertices that tore off in the last step, drops or not
 
 private:
     void launch(size_t idx, glm::vec3 velocity, const WaveGrid& grid, float sea_level_m);
@@ -133,6 +143,7 @@ private:
     std::vector<uint8_t> airborne_;
     int flying_ = 0;
     std::vector<TornOff> torn_;
+    int tore_off_ = 0;
     std::vector<size_t> tearing_;  // scratch
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // Spray droplets thrown from a splash ring (seed 003, 4.3, eqs. 4.5-4.7): ballistic
-// under gravity with a little air drag; a droplet that lands on the water dies and
-// leaves a small ripple for the wave grid.
+// under gravity with quadratic air drag that grows as drops shrink; a droplet that
+// lands on the water dies and leaves a small ripple for the wave grid.
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -20,12 +20,15 @@ namespace sim {
 struct SprayParams {
     size_t max_particles = 10000;
     float gravity_mps2 = 9.81f;
-    float drag_per_s = 0.4f;
+    // Quadratic drag against still air, a = -drag_m * |v| v / radius: for a sphere
+    // 3 rho_air C_d / (8 rho_water) = 3 * 1.2 * 0.5 / 8000. Fine drops slow hard and
+    // fall near where they left (terminal speed ~10 m/s at 5 mm); a boat's bow outruns them.
+    float drag_m = 2.25e-4f;
     // Launch speed per unit of the seed's |Vx| + |Vy| + |Vz| of the object: a stone
     // entering at 12 m/s throws droplets at up to ~6 m/s, with the crown.
     float speed_fraction = 0.4f;
     float ripple_depth_m = 0.001f;   // wave-grid push where a droplet lands
-    float max_age_s = 8.0f;          // droplets that never land (off the grid edge) go
+    float max_age_s = 3.0f;          // droplets that never land (off the grid edge) go
 };
 
 struct SprayParticle {
@@ -51,7 +54,11 @@ public:
     // falling object makes near zero), turned into the spray's frame: outward
     // speed_fraction*S*(0.2 + 0.8 a0), upward speed_fraction*S*(0.5 + 0.5 a1) (the
     // upward and outward bias), sideways speed_fraction*S*(a2 - 0.5)/2. With `ahead`
-    // only the front half of the ring sprays (a moving bow). Returns how many were added.
+    // (a moving bow) the rule holds in the bow's frame: S counts the object's speed once
+    // (not its |x| + |z| split), drops leave the front half of the ring mostly to the
+    // sides, low (the hull's sheet peels off at 25-40 degrees), and carry the object's
+    // horizontal velocity, so they burst beside the bow rather than fly back past the
+    // helm. Returns how many were added.
     int emit_splash(glm::vec3 centre, float ring_radius_m, glm::vec3 object_velocity, int count, Rng& rng,
                     std::optional<glm::vec2> ahead = std::nullopt);
 
