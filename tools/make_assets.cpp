@@ -131,8 +131,13 @@ Asset car() {
     for (vec2 p : oblong) face.push_back(vec3(p * vec2(0.93f, 0.8f), 0.002f));
     poly(a.part("mirror_glass", mat::mirror_glass), mirror_at, face, {0, 0, 1}, flat());
     // Dashboard: under the windshield's foot, low enough that the bonnet still shows.
-    prism(a.part("dashboard", mat::dashboard), {},
-          {{0.3f, 0.6f}, {0.9f, 0.6f}, {0.9f, 0.86f}, {0.5f, 0.955f}, {0.3f, 0.965f}}, -0.76f, 0.76f, flat());
+    // A floor over the body's top and door panels below the windows, so the seat sees
+    // no paint from inside.
+    Part& dash = a.part("dashboard", mat::dashboard);
+    prism(dash, {}, {{0.3f, 0.3f}, {0.9f, 0.3f}, {0.9f, 0.86f}, {0.5f, 0.955f}, {0.3f, 0.965f}}, -0.8f, 0.8f, flat());
+    for (float side : {-1.0f, 1.0f})
+        box(dash, {}, {-1.5f, 0.3f, side < 0 ? -0.8f : 0.76f}, {0.9f, 0.93f, side < 0 ? -0.76f : 0.8f}, flat());
+    box(dash, {}, {-1.5f, 0.88f, -0.76f}, {0.3f, 0.89f, 0.76f}, flat());  // the floor, over the body's top
     // Speedometer on the dashboard's face: a dark dial, 0 to 200 km/h over 270 degrees with
     // a tick every 20; the needle (drawn turned about the dial's centre by the renderer)
     // is modelled pointing straight up.
@@ -148,11 +153,11 @@ Asset car() {
     box(a.part("speedo_needle", mat::needle), dial, {-0.0018f, -0.012f, 0.002f}, {0.0018f, 0.06f, 0.0035f}, flat());
     // Steering wheel: rim, three spokes and a hub, on a column tilted up towards the seat
     // (its top leaning 0.35 rad away); the renderer turns it and the stalk about that axis.
-    const Xf wheel = facing_driver({0.02f, 0.9f, 0.0f}, 0.35f);
+    const Xf wheel = facing_driver({0.02f, 0.88f, 0.0f}, 0.35f);
     Part& sw = a.part("steering_wheel", mat::trim);
-    ring_sector(sw, wheel, 0.165f, 0.19f, 0.0f, 2.0f * kPi, -0.0125f, 0.0125f, 28, flat());
-    box(sw, wheel, {-0.17f, -0.012f, -0.02f}, {0.17f, 0.012f, -0.006f}, flat());
-    box(sw, wheel, {-0.014f, -0.17f, -0.02f}, {0.014f, 0.0f, -0.006f}, flat());
+    ring_sector(sw, wheel, 0.16f, 0.18f, 0.0f, 2.0f * kPi, -0.0125f, 0.0125f, 28, flat());
+    box(sw, wheel, {-0.165f, -0.012f, -0.02f}, {0.165f, 0.012f, -0.006f}, flat());
+    box(sw, wheel, {-0.014f, -0.165f, -0.02f}, {0.014f, 0.0f, -0.006f}, flat());
     box(sw, wheel, {-0.045f, -0.04f, -0.03f}, {0.045f, 0.035f, 0.01f}, flat());
     cylinder(a.part("steering_column", mat::dashboard), turned(wheel, kPi / 2.0f, {1, 0, 0}), 0.035f, 0.035f,
              -0.34f, -0.03f, 10, flat());
