@@ -223,6 +223,28 @@ Asset boat() {
     vec2 f0 = glm::mix(cabin[1], cabin[2], 0.35f) + fn * 0.012f, f1 = glm::mix(cabin[1], cabin[2], 0.85f) + fn * 0.012f;
     poly(win, {}, {{f0.x, f0.y, -0.6f}, {f0.x, f0.y, 0.6f}, {f1.x, f1.y, 0.55f}, {f1.x, f1.y, -0.55f}}, {fn.x, fn.y, 0}, flat());
     box(a.part("motor", mat::trim), {}, {-3.35f, -0.35f, -0.16f}, {-3.0f, 0.75f, 0.16f}, flat());
+    // The helm on the cabin's roof (the helm view's eye is at (-0.6, 1.9, 0)): a console,
+    // a wheel facing the helmsman and a low raked windscreen in a dark frame ahead of it.
+    box(a.part("helm_console", mat::hull_white), {}, {-0.15f, 1.36f, -0.28f}, {0.02f, 1.62f, 0.28f}, flat());
+    {
+        const float tilt = 0.5f, s = std::sin(tilt), c = std::cos(tilt);
+        const Xf helm{mat4(vec4(0, 0, 1, 0), vec4(s, c, 0, 0), vec4(-c, s, 0, 0), vec4(-0.2f, 1.66f, 0.0f, 1))};
+        Part& wheel = a.part("helm_wheel", mat::teak);
+        ring_sector(wheel, helm, 0.17f, 0.195f, 0.0f, 2.0f * kPi, -0.012f, 0.012f, 24, flat());
+        for (int k = 0; k < 3; ++k)
+            box(wheel, turned(helm, 2.0f * kPi * float(k) / 3.0f, {0, 0, 1}), {-0.01f, 0.0f, -0.008f},
+                {0.01f, 0.175f, 0.008f}, flat());
+        cylinder(wheel, turned(helm, kPi / 2.0f, {1, 0, 0}), 0.03f, 0.03f, -0.06f, 0.02f, 10, flat());
+    }
+    const vec3 screen[4] = {{0.06f, 1.38f, -0.72f}, {0.06f, 1.38f, 0.72f}, {-0.08f, 1.72f, 0.66f}, {-0.08f, 1.72f, -0.66f}};
+    const vec3 screen_n = glm::normalize(glm::cross(screen[1] - screen[0], screen[3] - screen[0]));
+    poly(a.part("windscreen", mat::glass), {}, {screen[0], screen[1], screen[2], screen[3]},
+         screen_n.x > 0.0f ? screen_n : -screen_n, flat());
+    Part& frame = a.part("windscreen_frame", mat::trim);
+    box(frame, {}, {-0.1f, 1.715f, -0.68f}, {-0.05f, 1.74f, 0.68f}, flat());
+    for (float side : {-1.0f, 1.0f})
+        prism(frame, {}, {{0.04f, 1.38f}, {0.08f, 1.38f}, {-0.06f, 1.74f}, {-0.1f, 1.74f}},
+              side < 0 ? -0.74f : 0.66f, side < 0 ? -0.66f : 0.74f, flat());
     return a;
 }
 
