@@ -78,7 +78,7 @@ Asset car() {
           -0.85f, 0.85f, flat());
     // The windshield's top edge lies well ahead of the driver's eye (-0.45, 1.2) so the
     // roof lining shows as a band at the top of the driver's view.
-    const std::vector<vec2> cabin = {{-1.5f, 0.86f}, {0.9f, 0.86f}, {0.05f, 1.44f}, {-1.15f, 1.45f}};
+    const std::vector<vec2> cabin = {{-1.5f, 0.86f}, {0.9f, 0.86f}, {0.22f, 1.44f}, {-1.15f, 1.45f}};
     prism(a.part("cabin", mat::car_paint), {}, cabin, -0.78f, 0.78f, flat());
     // Windshield: the cabin's front slope, bowed forward a little across its width.
     Part& ws = a.part("windshield", mat::glass);
@@ -95,7 +95,7 @@ Asset car() {
     }
     Part& win = a.part("windows", mat::glass);
     for (float side : {-1.0f, 1.0f})
-        poly(win, {}, {{-1.35f, 0.93f, side * 0.785f}, {0.74f, 0.93f, side * 0.785f}, {0.09f, 1.38f, side * 0.785f},
+        poly(win, {}, {{-1.35f, 0.93f, side * 0.785f}, {0.74f, 0.93f, side * 0.785f}, {0.24f, 1.38f, side * 0.785f},
                        {-1.1f, 1.39f, side * 0.785f}},
              {0, 0, side}, flat());
     vec2 rear_n = glm::normalize(vec2(cabin[3].y - cabin[0].y, cabin[0].x - cabin[3].x)) * -1.0f;
@@ -105,10 +105,10 @@ Asset car() {
     // The cabin seen from the driver's seat: a roof lining and A-pillars framing the
     // glass, the rear-view mirror, the dashboard with its speedometer, the steering wheel
     // and its wiper stalk. All sit inside the cabin's shell, so nothing changes outside.
-    box(a.part("headliner", mat::headliner), {}, {-1.1f, 1.4f, -0.76f}, {0.04f, 1.415f, 0.76f}, flat());
+    box(a.part("headliner", mat::headliner), {}, {-1.1f, 1.4f, -0.76f}, {0.2f, 1.415f, 0.76f}, flat());
     Part& visors = a.part("sun_visors", mat::sun_visor);  // folded up against the lining
     for (float side : {-1.0f, 1.0f})
-        box(visors, {}, {-0.16f, 1.388f, side < 0 ? -0.7f : 0.16f}, {0.01f, 1.4f, side < 0 ? -0.16f : 0.7f}, flat());
+        box(visors, {}, {0.0f, 1.388f, side < 0 ? -0.7f : 0.16f}, {0.17f, 1.4f, side < 0 ? -0.16f : 0.7f}, flat());
     Part& pillars = a.part("pillars", mat::pillar_lining);
     for (float side : {-1.0f, 1.0f}) {
         const vec2 in0 = -slope_n * 0.01f, in1 = -slope_n * 0.035f;
@@ -123,9 +123,9 @@ Asset car() {
     // Rear-view mirror: a rounded oblong on a stalk from the roof, its glass towards the seat.
     const std::vector<vec2> oblong = {{-0.12f, -0.016f}, {-0.106f, -0.033f}, {0.106f, -0.033f}, {0.12f, -0.016f},
                                       {0.12f, 0.016f},   {0.106f, 0.033f},   {-0.106f, 0.033f}, {-0.12f, 0.016f}};
-    const Xf mirror_at = facing_driver({0.12f, 1.325f, 0.0f}, 0.0f);
+    const Xf mirror_at = facing_driver({0.17f, 1.33f, 0.0f}, 0.0f);
     Part& mirror = a.part("mirror", mat::trim);
-    box(mirror, {}, {0.12f, 1.35f, -0.012f}, {0.15f, 1.41f, 0.012f}, flat());
+    box(mirror, {}, {0.17f, 1.35f, -0.012f}, {0.2f, 1.41f, 0.012f}, flat());
     prism(mirror, mirror_at, oblong, -0.03f, 0.0f, flat());
     std::vector<vec3> face;
     for (vec2 p : oblong) face.push_back(vec3(p * vec2(0.93f, 0.8f), 0.002f));
