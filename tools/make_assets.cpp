@@ -21,7 +21,9 @@ namespace fs = std::filesystem;
 constexpr float kPi = glm::pi<float>();
 
 namespace mat {
-const Material car_paint{"car_paint", {0.62f, 0.025f, 0.02f, 1}, 0.3f, 0.4f};
+// A dielectric paint: a metallic share would tint the sky it reflects at grazing angles
+// (the bonnet from the driver's seat) red, a pink glow.
+const Material car_paint{"car_paint", {0.42f, 0.02f, 0.018f, 1}, 0.0f, 0.38f};
 const Material glass{"glass", {0.035f, 0.05f, 0.065f, 1}, 0.0f, 0.05f};
 const Material tyre{"tyre", {0.018f, 0.018f, 0.02f, 1}, 0.0f, 0.9f};
 const Material chrome{"chrome", {0.6f, 0.6f, 0.62f, 1}, 0.9f, 0.25f};
@@ -31,6 +33,10 @@ const Material trim{"trim", {0.03f, 0.03f, 0.032f, 1}, 0.1f, 0.6f};
 const Material headliner{"headliner", {0.8f, 0.78f, 0.74f, 1}, 0.0f, 0.95f, {0.11f, 0.105f, 0.1f}};
 const Material sun_visor{"sun_visor", {0.6f, 0.58f, 0.55f, 1}, 0.0f, 0.9f, {0.075f, 0.072f, 0.068f}};
 const Material pillar_lining{"pillar_lining", {0.42f, 0.41f, 0.39f, 1}, 0.0f, 0.9f, {0.05f, 0.048f, 0.046f}};
+const Material dashboard{"dashboard", {0.045f, 0.045f, 0.05f, 1}, 0.0f, 0.8f};
+const Material instrument{"instrument", {0.85f, 0.85f, 0.82f, 1}, 0.0f, 0.5f};  // colours in COLOR_0
+const Material needle{"needle", {0.9f, 0.25f, 0.03f, 1}, 0.0f, 0.4f, {0.12f, 0.03f, 0.0f}};  // lit from within
+const Material mirror_glass{"mirror_glass", {0.85f, 0.86f, 0.88f, 1}, 1.0f, 0.06f};
 const Material headlight{"headlight", {0.9f, 0.88f, 0.8f, 1}, 0.0f, 0.1f};
 const Material taillight{"taillight", {0.45f, 0.01f, 0.01f, 1}, 0.0f, 0.2f};
 const Material hull_white{"hull_white", {0.78f, 0.78f, 0.76f, 1}, 0.0f, 0.35f};
@@ -70,7 +76,9 @@ Asset car() {
           {{-2.05f, 0.28f}, {2.05f, 0.28f}, {2.1f, 0.45f}, {2.05f, 0.72f}, {0.95f, 0.86f}, {-1.55f, 0.88f},
            {-2.08f, 0.8f}, {-2.1f, 0.45f}},
           -0.85f, 0.85f, flat());
-    const std::vector<vec2> cabin = {{-1.5f, 0.86f}, {0.9f, 0.86f}, {0.3f, 1.43f}, {-1.15f, 1.45f}};
+    // The windshield's top edge lies well ahead of the driver's eye (-0.45, 1.2) so the
+    // roof lining shows as a band at the top of the driver's view.
+    const std::vector<vec2> cabin = {{-1.5f, 0.86f}, {0.9f, 0.86f}, {0.22f, 1.44f}, {-1.15f, 1.45f}};
     prism(a.part("cabin", mat::car_paint), {}, cabin, -0.78f, 0.78f, flat());
     // Windshield: the cabin's front slope, bowed forward a little across its width.
     Part& ws = a.part("windshield", mat::glass);
@@ -87,7 +95,7 @@ Asset car() {
     }
     Part& win = a.part("windows", mat::glass);
     for (float side : {-1.0f, 1.0f})
-        poly(win, {}, {{-1.35f, 0.93f, side * 0.785f}, {0.74f, 0.93f, side * 0.785f}, {0.25f, 1.38f, side * 0.785f},
+        poly(win, {}, {{-1.35f, 0.93f, side * 0.785f}, {0.74f, 0.93f, side * 0.785f}, {0.24f, 1.38f, side * 0.785f},
                        {-1.1f, 1.39f, side * 0.785f}},
              {0, 0, side}, flat());
     vec2 rear_n = glm::normalize(vec2(cabin[3].y - cabin[0].y, cabin[0].x - cabin[3].x)) * -1.0f;
@@ -95,20 +103,65 @@ Asset car() {
                    {-1.19f - 0.01f, 1.4f, -0.6f}},
          {rear_n.x, rear_n.y, 0}, flat());
     // The cabin seen from the driver's seat: a roof lining and A-pillars framing the
-    // glass. Both sit inside the cabin's shell, so nothing changes outside.
-    box(a.part("headliner", mat::headliner), {}, {-1.1f, 1.4f, -0.76f}, {0.28f, 1.415f, 0.76f}, flat());
+    // glass, the rear-view mirror, the dashboard with its speedometer, the steering wheel
+    // and its wiper stalk. All sit inside the cabin's shell, so nothing changes outside.
+    box(a.part("headliner", mat::headliner), {}, {-1.1f, 1.4f, -0.76f}, {0.2f, 1.415f, 0.76f}, flat());
     Part& visors = a.part("sun_visors", mat::sun_visor);  // folded up against the lining
     for (float side : {-1.0f, 1.0f})
-        box(visors, {}, {0.1f, 1.388f, side < 0 ? -0.7f : 0.12f}, {0.27f, 1.4f, side < 0 ? -0.12f : 0.7f}, flat());
-    Part& mirror = a.part("mirror", mat::trim);  // the rear-view mirror on its stalk
-    box(mirror, {}, {0.19f, 1.33f, -0.015f}, {0.23f, 1.4f, 0.015f}, flat());
-    box(mirror, {}, {0.16f, 1.275f, -0.11f}, {0.2f, 1.335f, 0.11f}, flat());
+        box(visors, {}, {0.0f, 1.388f, side < 0 ? -0.7f : 0.16f}, {0.17f, 1.4f, side < 0 ? -0.16f : 0.7f}, flat());
     Part& pillars = a.part("pillars", mat::pillar_lining);
     for (float side : {-1.0f, 1.0f}) {
-        const vec2 in0 = -slope_n * 0.01f, in1 = -slope_n * 0.05f;
-        prism(pillars, {}, {lo + in1, lo + in0, hi + in0, hi + in1}, side < 0 ? -0.77f : 0.69f,
-              side < 0 ? -0.69f : 0.77f, flat());
+        const vec2 in0 = -slope_n * 0.01f, in1 = -slope_n * 0.035f;
+        prism(pillars, {}, {lo + in1, lo + in0, hi + in0, hi + in1}, side < 0 ? -0.775f : 0.73f,
+              side < 0 ? -0.73f : 0.775f, flat());
     }
+    // Frames facing the driver: local x is the car's right (+z), y up, z towards the seat.
+    auto facing_driver = [](vec3 centre, float tilt) {  // tilt: the top leaning away, rad
+        float s = std::sin(tilt), c = std::cos(tilt);
+        return Xf{mat4(vec4(0, 0, 1, 0), vec4(s, c, 0, 0), vec4(-c, s, 0, 0), vec4(centre, 1))};
+    };
+    // Rear-view mirror: a rounded oblong on a stalk from the roof, its glass towards the seat.
+    const std::vector<vec2> oblong = {{-0.12f, -0.016f}, {-0.106f, -0.033f}, {0.106f, -0.033f}, {0.12f, -0.016f},
+                                      {0.12f, 0.016f},   {0.106f, 0.033f},   {-0.106f, 0.033f}, {-0.12f, 0.016f}};
+    const Xf mirror_at = facing_driver({0.17f, 1.33f, 0.0f}, 0.0f);
+    Part& mirror = a.part("mirror", mat::trim);
+    box(mirror, {}, {0.17f, 1.35f, -0.012f}, {0.2f, 1.41f, 0.012f}, flat());
+    prism(mirror, mirror_at, oblong, -0.03f, 0.0f, flat());
+    std::vector<vec3> face;
+    for (vec2 p : oblong) face.push_back(vec3(p * vec2(0.93f, 0.8f), 0.002f));
+    poly(a.part("mirror_glass", mat::mirror_glass), mirror_at, face, {0, 0, 1}, flat());
+    // Dashboard: under the windshield's foot, low enough that the bonnet still shows.
+    // A floor over the body's top and door panels below the windows, so the seat sees
+    // no paint from inside.
+    Part& dash = a.part("dashboard", mat::dashboard);
+    prism(dash, {}, {{0.3f, 0.3f}, {0.9f, 0.3f}, {0.9f, 0.86f}, {0.5f, 0.955f}, {0.3f, 0.965f}}, -0.8f, 0.8f, flat());
+    for (float side : {-1.0f, 1.0f})
+        box(dash, {}, {-1.5f, 0.3f, side < 0 ? -0.8f : 0.76f}, {0.9f, 0.93f, side < 0 ? -0.76f : 0.8f}, flat());
+    box(dash, {}, {-1.5f, 0.88f, -0.76f}, {0.3f, 0.89f, 0.76f}, flat());  // the floor, over the body's top
+    // Speedometer on the dashboard's face: a dark dial, 0 to 200 km/h over 270 degrees with
+    // a tick every 20; the needle (drawn turned about the dial's centre by the renderer)
+    // is modelled pointing straight up.
+    const Xf dial = facing_driver({0.298f, 0.86f, 0.0f}, 0.0f);
+    Part& face_part = a.part("speedo_dial", mat::instrument);
+    ring_sector(face_part, dial, 0.0f, 0.072f, 0.0f, 2.0f * kPi, -0.004f, 0.0f, 24, flat(vec4(0.025f, 0.025f, 0.03f, 1)));
+    ring_sector(face_part, dial, 0.072f, 0.08f, 0.0f, 2.0f * kPi, -0.004f, 0.006f, 24, flat(vec4(0.35f, 0.35f, 0.36f, 1)));
+    for (int k = 0; k <= 10; ++k) {
+        Xf tick = turned(dial, glm::radians(135.0f - 27.0f * float(k)), {0, 0, 1});
+        float w = k % 5 == 0 ? 0.003f : 0.0018f;
+        box(face_part, tick, {-w, 0.05f, 0.0f}, {w, 0.066f, 0.0015f}, flat());
+    }
+    box(a.part("speedo_needle", mat::needle), dial, {-0.0018f, -0.012f, 0.002f}, {0.0018f, 0.06f, 0.0035f}, flat());
+    // Steering wheel: rim, three spokes and a hub, on a column tilted up towards the seat
+    // (its top leaning 0.35 rad away); the renderer turns it and the stalk about that axis.
+    const Xf wheel = facing_driver({0.02f, 0.88f, 0.0f}, 0.35f);
+    Part& sw = a.part("steering_wheel", mat::trim);
+    ring_sector(sw, wheel, 0.16f, 0.18f, 0.0f, 2.0f * kPi, -0.0125f, 0.0125f, 28, flat());
+    box(sw, wheel, {-0.165f, -0.012f, -0.02f}, {0.165f, 0.012f, -0.006f}, flat());
+    box(sw, wheel, {-0.014f, -0.165f, -0.02f}, {0.014f, 0.0f, -0.006f}, flat());
+    box(sw, wheel, {-0.045f, -0.04f, -0.03f}, {0.045f, 0.035f, 0.01f}, flat());
+    cylinder(a.part("steering_column", mat::dashboard), turned(wheel, kPi / 2.0f, {1, 0, 0}), 0.035f, 0.035f,
+             -0.34f, -0.03f, 10, flat());
+    box(a.part("wiper_stalk", mat::trim), wheel, {0.03f, -0.008f, -0.075f}, {0.16f, 0.008f, -0.06f}, flat());
     box(a.part("bumpers", mat::trim), {}, {2.02f, 0.3f, -0.86f}, {2.14f, 0.44f, 0.86f}, flat());
     box(a.parts.back(), {}, {-2.14f, 0.3f, -0.86f}, {-2.02f, 0.44f, 0.86f}, flat());
     Part& lights = a.part("headlights", mat::headlight);
@@ -170,6 +223,28 @@ Asset boat() {
     vec2 f0 = glm::mix(cabin[1], cabin[2], 0.35f) + fn * 0.012f, f1 = glm::mix(cabin[1], cabin[2], 0.85f) + fn * 0.012f;
     poly(win, {}, {{f0.x, f0.y, -0.6f}, {f0.x, f0.y, 0.6f}, {f1.x, f1.y, 0.55f}, {f1.x, f1.y, -0.55f}}, {fn.x, fn.y, 0}, flat());
     box(a.part("motor", mat::trim), {}, {-3.35f, -0.35f, -0.16f}, {-3.0f, 0.75f, 0.16f}, flat());
+    // The helm on the cabin's roof (the helm view's eye is at (-0.6, 1.9, 0)): a console,
+    // a wheel facing the helmsman and a low raked windscreen in a dark frame ahead of it.
+    box(a.part("helm_console", mat::hull_white), {}, {-0.15f, 1.36f, -0.28f}, {0.02f, 1.62f, 0.28f}, flat());
+    {
+        const float tilt = 0.5f, s = std::sin(tilt), c = std::cos(tilt);
+        const Xf helm{mat4(vec4(0, 0, 1, 0), vec4(s, c, 0, 0), vec4(-c, s, 0, 0), vec4(-0.2f, 1.66f, 0.0f, 1))};
+        Part& wheel = a.part("helm_wheel", mat::teak);
+        ring_sector(wheel, helm, 0.17f, 0.195f, 0.0f, 2.0f * kPi, -0.012f, 0.012f, 24, flat());
+        for (int k = 0; k < 3; ++k)
+            box(wheel, turned(helm, 2.0f * kPi * float(k) / 3.0f, {0, 0, 1}), {-0.01f, 0.0f, -0.008f},
+                {0.01f, 0.175f, 0.008f}, flat());
+        cylinder(wheel, turned(helm, kPi / 2.0f, {1, 0, 0}), 0.03f, 0.03f, -0.06f, 0.02f, 10, flat());
+    }
+    const vec3 screen[4] = {{0.06f, 1.38f, -0.72f}, {0.06f, 1.38f, 0.72f}, {-0.08f, 1.72f, 0.66f}, {-0.08f, 1.72f, -0.66f}};
+    const vec3 screen_n = glm::normalize(glm::cross(screen[1] - screen[0], screen[3] - screen[0]));
+    poly(a.part("windscreen", mat::glass), {}, {screen[0], screen[1], screen[2], screen[3]},
+         screen_n.x > 0.0f ? screen_n : -screen_n, flat());
+    Part& frame = a.part("windscreen_frame", mat::trim);
+    box(frame, {}, {-0.1f, 1.715f, -0.68f}, {-0.05f, 1.74f, 0.68f}, flat());
+    for (float side : {-1.0f, 1.0f})
+        prism(frame, {}, {{0.04f, 1.38f}, {0.08f, 1.38f}, {-0.06f, 1.74f}, {-0.1f, 1.74f}},
+              side < 0 ? -0.74f : 0.66f, side < 0 ? -0.66f : 0.74f, flat());
     return a;
 }
 

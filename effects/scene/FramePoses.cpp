@@ -38,7 +38,9 @@ FramePoses capture_poses(const sim::World& world) {
         p.car = car->pose();
         p.car_steer_rad = car->steer_rad();
         p.car_wheel_spin_rad = car->wheel_spin_rad();
+        p.car_speed_mps = car->speed_mps();
     }
+    if (const auto* player = world.find<sim::Player>()) p.wipers = player->wipers();
     if (const auto* boat = world.find<sim::Boat>()) p.boat = boat->pose();
     if (const auto* objects = world.find<sim::ThrownObjects>())
         for (const sim::ThrownObject& o : objects->objects())
@@ -57,6 +59,7 @@ FramePoses interpolate(const FramePoses& from, const FramePoses& to, float t) {
     p.car = lerp_pose(from.car, to.car, t);
     p.car_steer_rad = glm::mix(from.car_steer_rad, to.car_steer_rad, t);
     p.car_wheel_spin_rad = lerp_angle(from.car_wheel_spin_rad, to.car_wheel_spin_rad, t);
+    p.car_speed_mps = glm::mix(from.car_speed_mps, to.car_speed_mps, t);
     p.boat = lerp_pose(from.boat, to.boat, t);
     for (size_t i = 0; i < p.objects.size() && i < from.objects.size(); ++i)
         if (from.objects[i].age_ticks + 1 == to.objects[i].age_ticks)

@@ -1,6 +1,6 @@
 #pragma once
 // What the renderer draws from the sim that moves every tick: the camera, the car (with
-// its wheels), the boat and the thrown objects. Captured after a tick; a frame that
+// its wheels and cabin instruments), the boat and the thrown objects. Captured after a tick; a frame that
 // falls between two ticks draws them where they were in between (render interpolation),
 // so motion stays smooth whatever the frame rate. Everything else is drawn as of the
 // latest tick.
@@ -12,6 +12,7 @@
 #include "effects/scene/ObjectiveMarkers.h"
 #include "sim/core/Pose.h"
 #include "sim/player/CameraRig.h"
+#include "sim/player/Player.h"
 #include "sim/world/World.h"
 
 namespace effects {
@@ -19,7 +20,8 @@ namespace effects {
 struct FramePoses {
     sim::CameraView camera;
     sim::Pose car, boat;
-    float car_steer_rad = 0.0f, car_wheel_spin_rad = 0.0f;
+    float car_steer_rad = 0.0f, car_wheel_spin_rad = 0.0f, car_speed_mps = 0.0f;
+    sim::WiperMode wipers = sim::WiperMode::Off;
     struct Object {
         glm::vec3 position{0.0f};
         float radius_m = 0.0f;

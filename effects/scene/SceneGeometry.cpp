@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
+#include "effects/scene/CabinInstruments.h"
 #include "effects/scene/TerrainMesh.h"
 
 namespace effects {
@@ -105,9 +106,23 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
     };
     if (desc_.car_model >= 0) {
         // Wheels and hubcaps (meshes "wheel_fl", "hubcap_rr", ...) turn
-        // about their axle (model z) and the front ones steer about their vertical.
+        // about their axle (model z) and the front ones steer about their vertical. In the
+        // cabin the needle turns about the dial's centre and the wiper stalk about the
+        // steering wheel's (each modelled after the part it turns about).
         const glm::mat4 body = poses.car.matrix();
+        auto turned_about = [&](glm::vec3 pivot, float angle, glm::vec3 axis) {
+            return glm::translate(glm::rotate(glm::translate(body, pivot), angle, axis), -pivot);
+        };
+        glm::vec3 dial_centre(0.0f), wheel_centre(0.0f);
         models_[size_t(desc_.car_model)]->draw_parts(p, depth_only, [&](const std::string& mesh, glm::vec3 centre) {
+            if (mesh == "speedo_dial") dial_centre = centre;
+            if (mesh == "steering_wheel") wheel_centre = centre;
+            if (mesh == "speedo_needle")
+                return place(p, turned_about(dial_centre, cabin::speedo_needle_rad(poses.car_speed_mps), cabin::dial_axis()), depth_only);
+            if (mesh == "steering_wheel")
+                return place(p, turned_about(centre, cabin::steering_wheel_rad(poses.car_steer_rad), cabin::column_axis()), depth_only);
+            if (mesh == "wiper_stalk")
+                return place(p, turned_about(wheel_centre, cabin::wiper_stalk_rad(poses.wipers), cabin::column_axis()), depth_only);
             const bool wheel = mesh.starts_with("wheel_") || mesh.starts_with("hubcap_");
             if (!wheel) return place(p, body, depth_only);
             const bool front = mesh.size() >= 2 && mesh[mesh.size() - 2] == 'f';
