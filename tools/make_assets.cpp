@@ -225,10 +225,11 @@ Asset boat() {
     box(a.part("motor", mat::trim), {}, {-3.35f, -0.35f, -0.16f}, {-3.0f, 0.75f, 0.16f}, flat());
     // The helm on the cabin's roof (the helm view's eye is at (-0.6, 1.9, 0)): a console,
     // a wheel facing the helmsman and a low raked windscreen in a dark frame ahead of it.
-    box(a.part("helm_console", mat::hull_white), {}, {-0.15f, 1.36f, -0.28f}, {0.02f, 1.62f, 0.28f}, flat());
+    // Console and wheel stand to starboard and low, so the view over the bow stays open.
+    box(a.part("helm_console", mat::hull_white), {}, {-0.15f, 1.36f, 0.2f}, {0.02f, 1.5f, 0.6f}, flat());
     {
         const float tilt = 0.5f, s = std::sin(tilt), c = std::cos(tilt);
-        const Xf helm{mat4(vec4(0, 0, 1, 0), vec4(s, c, 0, 0), vec4(-c, s, 0, 0), vec4(-0.2f, 1.66f, 0.0f, 1))};
+        const Xf helm{mat4(vec4(0, 0, 1, 0), vec4(s, c, 0, 0), vec4(-c, s, 0, 0), vec4(-0.2f, 1.56f, 0.42f, 1))};
         Part& wheel = a.part("helm_wheel", mat::teak);
         ring_sector(wheel, helm, 0.17f, 0.195f, 0.0f, 2.0f * kPi, -0.012f, 0.012f, 24, flat());
         for (int k = 0; k < 3; ++k)
