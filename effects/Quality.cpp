@@ -14,7 +14,6 @@ QualitySettings quality_settings(Quality quality) {
             s.fluid_kernel_max = 5;
             s.rain_map_width = 512;
             s.dust_max_shells = 8;
-            s.antialias = false;  // several fills on llvmpipe: auto's budget cannot spare them (F3)
             break;
         case Quality::Low:
             s.render_scale = 0.5f;
@@ -27,7 +26,6 @@ QualitySettings quality_settings(Quality quality) {
             s.rain_map_width = 256;
             s.bloom = false;
             s.dust_max_shells = 4;
-            s.antialias = false;
             break;
     }
     return s;

@@ -21,7 +21,9 @@ struct QualitySettings {
     int rain_map_width = 1024;     // the windshield's drop height map (half as tall)
     bool bloom = true;             // the energy glow's bloom
     int dust_max_shells = 12;      // shells per dusty prop up close
-    bool antialias = true;         // FXAA over the tone-mapped frame (the player can toggle it)
+    // FXAA over the tone-mapped frame, off in every preset: on llvmpipe it costs about a
+    // quarter of a high frame (docs/PERFORMANCE.md), so the player turns it on (F3).
+    bool antialias = false;
     bool operator==(const QualitySettings&) const = default;
 };
 
