@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "SimInput.h"
 #include "SimTestLevel.h"
 #include "sim/core/Hash.h"
 #include "sim/core/Rng.h"
@@ -18,16 +19,6 @@ namespace {
 
 using sim::Control;
 using sim::TickInput;
-
-TickInput held(std::initializer_list<Control> controls) {
-    TickInput in;
-    for (Control c : controls) in.set(c, true);
-    return in;
-}
-
-void run(sim::World& w, int ticks, TickInput in) {
-    for (int i = 0; i < ticks; ++i) w.step(in);
-}
 
 // Presses a control for one tick, then releases it for one tick.
 void tap(sim::World& w, Control c, TickInput base = {}) {

@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 
+#include "SimInput.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
@@ -21,12 +22,6 @@ using sim::TickInput;
 
 constexpr float kPi = 3.14159265f;
 constexpr int kOneSecond = sim::kTickRateHz;
-
-TickInput held(std::initializer_list<Control> controls) {
-    TickInput in;
-    for (Control c : controls) in.set(c, true);
-    return in;
-}
 
 // Flat land (a road everywhere) for z < 0, the sea beyond; no obstacles yet.
 sim::LevelDesc open_level() {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "SimInput.h"
 #include "SimTestLevel.h"
 #include "game/replay/InputScript.h"
 #include "game/replay/ReplayReader.h"
@@ -23,16 +24,6 @@ using sim::Control;
 using sim::TickInput;
 
 constexpr float kPi = 3.14159265f;
-
-TickInput held(std::initializer_list<Control> controls) {
-    TickInput in;
-    for (Control c : controls) in.set(c, true);
-    return in;
-}
-
-void run(sim::World& w, int ticks, TickInput in) {
-    for (int i = 0; i < ticks; ++i) w.step(in);
-}
 
 void tap(sim::World& w, Control c) {
     w.step(held({c}));
