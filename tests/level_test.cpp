@@ -19,6 +19,7 @@
 #include "game/DataPaths.h"
 #include "game/level/GltfModel.h"
 #include "game/level/LevelLoader.h"
+#include "game/level/LevelNames.h"
 #include "game/session/GameSession.h"
 #include "sim/world/Terrain.h"
 

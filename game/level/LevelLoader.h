@@ -116,11 +116,6 @@ struct LoadedLevel {
 // A level name ("harbour" -> <data_dir>/levels/harbour.json) or a path (contains '/'
 // or ends in .json). Does not check that the file exists.
 std::filesystem::path resolve_level_path(std::string_view name_or_path);
-// The level names in `dir` (its *.json files' stems), sorted; none if it cannot be read.
-std::vector<std::string> level_names(const std::filesystem::path& dir);
-// The name in `names` a mistyped `name` most likely meant (a few letters off, case
-// ignored), if any: for "no level named 'harbor'; did you mean 'harbour'?".
-std::optional<std::string> nearest_level_name(std::string_view name, const std::vector<std::string>& names);
 
 // Reads the dust's fibre image into the renderer's growth statistics; throws
 // FibreImageError. The sim never reads them.
