@@ -7,6 +7,7 @@
 
 #include "game/level/LevelLoader.h"
 #include "game/play/ObjectiveHud.h"
+#include "game/replay/ObjectiveSummary.h"
 #include "game/replay/InputScript.h"
 #include "sim/core/DetMath.h"
 #include "sim/objectives/Course.h"
@@ -21,6 +22,9 @@ namespace {
 constexpr float kQuarterTurn = 1.57079632679f;
 // The lap replays/harbour_drive.script drives, in ticks (`replay --check` prints it).
 constexpr uint64_t kHarbourDriveLapTicks = 1308;
+// The boat's lap replays/harbour_goals.script drives, and the tick its shot lights the crate.
+constexpr uint64_t kHarbourGoalsLapTicks = 816;
+constexpr uint64_t kHarbourGoalsCrateHitTick = 499;
 
 // A square of four gates 20 m apart, driven anticlockwise seen from above (+x, -z, -x, +z).
 sim::CourseDesc square_course() {
@@ -222,6 +226,34 @@ TEST(HarbourDriveScript, DrivesOneLapOfTheCarCourse) {
     EXPECT_EQ(summary[0], "course quay (car): 1 lap, last " + game::lap_time_text(kHarbourDriveLapTicks) + ", best " +
                               game::lap_time_text(kHarbourDriveLapTicks) + " (" + std::to_string(kHarbourDriveLapTicks) +
                               " ticks)");
+}
+
+// replays/harbour_goals gets the boat round its course and lights a crate with a shot.
+TEST(HarbourGoalsScript, LapsTheBoatCourseAndHitsACrate) {
+    const game::InputScript script =
+        game::load_script(std::string(SPINDRIFT_TEST_DATA) + "/../../replays/harbour_goals.script");
+    sim::World world(game::load_level(script.level).sim);
+    const sim::Objectives& objectives = world.get<sim::Objectives>();
+    const sim::Course* course = objectives.course_for(sim::CourseVehicle::Boat);
+    ASSERT_NE(course, nullptr);
+    for (uint32_t t = 0; t < script.end_tick; ++t) world.step(script.inputs[t]);
+    EXPECT_EQ(course->laps(), 1u);
+    ASSERT_TRUE(course->best_lap_ticks().has_value());
+    EXPECT_EQ(*course->best_lap_ticks(), kHarbourGoalsLapTicks);
+    size_t crates = 0;
+    for (const sim::TargetState& t : objectives.targets().states())
+        if (t.hit() && t.desc.kind == sim::TargetKind::Crate) {
+            ++crates;
+            EXPECT_EQ(t.hit_by, sim::HitBy::Shot);
+            EXPECT_EQ(t.hit_at_ticks, kHarbourGoalsCrateHitTick);
+        }
+    EXPECT_EQ(crates, 1u);
+    const std::vector<std::string> summary = game::objective_summary_lines(world);
+    ASSERT_EQ(summary.size(), 3u);
+    EXPECT_EQ(summary[1], "course pier (boat): 1 lap, last " + game::lap_time_text(kHarbourGoalsLapTicks) + ", best " +
+                              game::lap_time_text(kHarbourGoalsLapTicks) + " (" + std::to_string(kHarbourGoalsLapTicks) +
+                              " ticks)");
+    EXPECT_EQ(summary[2], "targets hit 1 of 6");
 }
 
 TEST(ObjectiveHud, LapTimesInMinutesSecondsAndHundredths) {
