@@ -27,7 +27,7 @@ constexpr uint64_t kHarbourDriveLapTicks = 1308;
 // crate and its stone hits a buoy.
 constexpr uint64_t kHarbourGoalsLapTicks = 816;
 constexpr uint64_t kHarbourGoalsCrateHitTick = 499;
-constexpr uint64_t kHarbourGoalsBuoyHitTick = 1595;
+constexpr uint64_t kHarbourGoalsBuoyHitTick = 1631;
 
 // A square of four gates 20 m apart, driven anticlockwise seen from above (+x, -z, -x, +z).
 sim::CourseDesc square_course() {
