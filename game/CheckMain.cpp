@@ -13,6 +13,7 @@
 #include "game/cli/Args.h"
 #include "game/cli/ExitCode.h"
 #include "game/level/LevelLoader.h"
+#include "game/replay/ObjectiveSummary.h"
 #include "game/replay/ReplayCheck.h"
 #include "game/replay/ReplayReader.h"
 #include "game/session/GameSession.h"
@@ -49,6 +50,9 @@ int check_one(const std::string& path, int threads, bool strict) {
     std::cout << path << ": " << replay.inputs.size() << " ticks, " << checker.hashes_checked()
               << " hash checks, check passed" << (replay.complete ? "" : " (on the replay's complete prefix)")
               << " (" << threads << (threads == 1 ? " thread" : " threads") << ")\n";
+    // The objectives as the ticks left them, as `spindrift replay` prints them: the
+    // checked hashes confirm them.
+    for (const std::string& line : objective_summary_lines(world)) std::cout << "  " << line << "\n";
     return game::kExitOk;
 }
 

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -145,6 +146,18 @@ TEST_F(Cli, TheGlFreeCheckerPassesARecordingAndNamesTheFirstTickOfADesync) {
         EXPECT_EQ(r.code, 0) << r.output;
         EXPECT_NE(r.output.find("200 ticks, 200 hash checks, check passed"), std::string::npos) << r.output;
     }
+    // The objectives as the ticks left them, the same lines `replay` prints.
+    auto objective_lines = [](const std::string& output) {
+        std::string lines;
+        std::istringstream in(output);
+        for (std::string line; std::getline(in, line);)
+            if (line.rfind("  course ", 0) == 0 || line.rfind("  targets hit ", 0) == 0) lines += line + "\n";
+        return lines;
+    };
+    const std::string checked = objective_lines(run_check(rep.string()).output);
+    EXPECT_NE(checked.find("  course quay (car): "), std::string::npos) << checked;
+    EXPECT_NE(checked.find("  targets hit 0 of 6\n"), std::string::npos) << checked;
+    EXPECT_EQ(checked, objective_lines(run("replay " + rep.string() + " --headless --frames none").output));
     // The same recording with steering held at tick 100 (index 99), its hashes kept: a
     // genuine desync there. The writer recomputes the CRCs; the fingerprint bytes of the
     // ticks between chunk ends are what append() keeps of the parts.

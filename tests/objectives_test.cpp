@@ -1,5 +1,6 @@
 // The objectives (sim/objectives): gate crossings and lap timing on a synthetic course,
-// targets hit by a stone and by a shot, and the lap that replays/harbour_drive drives.
+// targets hit by a stone and by a shot, the lap replays/harbour_drive drives and the lap
+// and hits of replays/harbour_goals.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -7,6 +8,7 @@
 
 #include "game/level/LevelLoader.h"
 #include "game/play/ObjectiveHud.h"
+#include "game/replay/ObjectiveSummary.h"
 #include "game/replay/InputScript.h"
 #include "sim/core/DetMath.h"
 #include "sim/objectives/Course.h"
@@ -21,6 +23,11 @@ namespace {
 constexpr float kQuarterTurn = 1.57079632679f;
 // The lap replays/harbour_drive.script drives, in ticks (`replay --check` prints it).
 constexpr uint64_t kHarbourDriveLapTicks = 1308;
+// The boat's lap replays/harbour_goals.script drives, and the ticks its shot lights a
+// crate and its stone hits a buoy.
+constexpr uint64_t kHarbourGoalsLapTicks = 816;
+constexpr uint64_t kHarbourGoalsCrateHitTick = 499;
+constexpr uint64_t kHarbourGoalsBuoyHitTick = 1631;
 
 // A square of four gates 20 m apart, driven anticlockwise seen from above (+x, -z, -x, +z).
 sim::CourseDesc square_course() {
@@ -222,6 +229,35 @@ TEST(HarbourDriveScript, DrivesOneLapOfTheCarCourse) {
     EXPECT_EQ(summary[0], "course quay (car): 1 lap, last " + game::lap_time_text(kHarbourDriveLapTicks) + ", best " +
                               game::lap_time_text(kHarbourDriveLapTicks) + " (" + std::to_string(kHarbourDriveLapTicks) +
                               " ticks)");
+}
+
+// replays/harbour_goals lights a crate with a shot from the car, gets the boat round its
+// course and hits a buoy with a stone from the boat.
+TEST(HarbourGoalsScript, LapsTheBoatCourseAndHitsACrateAndABuoy) {
+    const game::InputScript script =
+        game::load_script(std::string(SPINDRIFT_TEST_DATA) + "/../../replays/harbour_goals.script");
+    sim::World world(game::load_level(script.level).sim);
+    const sim::Objectives& objectives = world.get<sim::Objectives>();
+    const sim::Course* course = objectives.course_for(sim::CourseVehicle::Boat);
+    ASSERT_NE(course, nullptr);
+    for (uint32_t t = 0; t < script.end_tick; ++t) world.step(script.inputs[t]);
+    EXPECT_EQ(course->laps(), 1u);
+    ASSERT_TRUE(course->best_lap_ticks().has_value());
+    EXPECT_EQ(*course->best_lap_ticks(), kHarbourGoalsLapTicks);
+    // Exactly one crate, by the shot, and one buoy, by the stone.
+    std::vector<std::string> hits;
+    for (const sim::TargetState& t : objectives.targets().states())
+        if (t.hit())
+            hits.push_back(std::string(t.desc.kind == sim::TargetKind::Crate ? "crate" : "buoy") + " by " +
+                           (t.hit_by == sim::HitBy::Shot ? "shot" : "object") + " at " + std::to_string(t.hit_at_ticks));
+    EXPECT_EQ(hits, (std::vector<std::string>{"crate by shot at " + std::to_string(kHarbourGoalsCrateHitTick),
+                                              "buoy by object at " + std::to_string(kHarbourGoalsBuoyHitTick)}));
+    const std::vector<std::string> summary = game::objective_summary_lines(world);
+    ASSERT_EQ(summary.size(), 3u);
+    EXPECT_EQ(summary[1], "course pier (boat): 1 lap, last " + game::lap_time_text(kHarbourGoalsLapTicks) + ", best " +
+                              game::lap_time_text(kHarbourGoalsLapTicks) + " (" + std::to_string(kHarbourGoalsLapTicks) +
+                              " ticks)");
+    EXPECT_EQ(summary[2], "targets hit 2 of 6");
 }
 
 TEST(ObjectiveHud, LapTimesInMinutesSecondsAndHundredths) {

@@ -214,6 +214,43 @@ TEST(VehicleContact, SlidesOffBollardsByTheWater) {
     expect_never_trapped(bollards());
 }
 
+// The trap a player met: nosed in at about 0.5 rad to a bollard right at the quay edge
+// with the throttle held, the bollard against the nose and the quay edge under its
+// right front corner. Reversing always got out; full lock away from the water with the
+// throttle must too: the nose scrubs round along the bollard and the car drives off.
+TEST(VehicleContact, SteersOffABollardAtTheQuayEdge) {
+    const Obstacle o = bollards();
+    const sim::Aabb bollard = o.level.solids[6];
+    for (float off : {0.0f, 0.5f, 1.0f}) {  // how far right of the bollard the car aims
+        const float a = 0.5f;
+        const glm::vec2 dir(std::cos(a), std::sin(a));  // along the quay and out towards the sea
+        const glm::vec2 right(-dir.y, dir.x);
+        const glm::vec2 start = glm::vec2(0.0f, -0.5f) - dir * 12.0f + right * off;
+        sim::LevelDesc level = o.level;
+        level.car_spawn = {{start.x, level.land_height_m, start.y}, heading_of(dir)};
+        sim::World w(level);
+        const sim::Car& car = w.get<sim::Car>();
+        // How far the nose (the front axle's collision circle) is from the bollard.
+        auto nose_gap = [&] {
+            glm::vec3 f = car.pose().forward_flat(), c = car.position();
+            glm::vec2 nose(c.x + f.x * car.params().cg_to_front_m, c.z + f.z * car.params().cg_to_front_m);
+            return box_distance(bollard, nose) - car.params().radius_m;
+        };
+        for (int t = 0; t < 4 * kOneSecond; ++t) w.step(cruise(car, 4.0f));
+        run(w, kOneSecond, held({Control::Throttle}));
+        ASSERT_LT(nose_gap(), 0.05f) << off << " m right: not nosed in to the bollard";
+        ASSERT_LT(car.speed_mps(), 0.1f) << off << " m right: not held by the bollard";
+        bool free = false;
+        for (int t = 0; t < kOneSecond && !free; ++t) {
+            w.step(held({Control::Throttle, Control::SteerLeft}));
+            ASSERT_EQ(trapped_where(w), "") << off << " m right";
+            free = car.speed_mps() > 0.5f && nose_gap() > 0.05f;
+        }
+        EXPECT_TRUE(free) << off << " m right: a second of full lock and throttle later, "
+                          << car.speed_mps() << " m/s with the nose " << nose_gap() << " m off the bollard";
+    }
+}
+
 TEST(VehicleContact, SlidesOffALampPost) {
     expect_never_trapped(lamp_post());
 }

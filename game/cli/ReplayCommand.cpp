@@ -18,9 +18,9 @@
 #include "game/cli/QualityOption.h"
 #include "game/level/LevelMemory.h"
 #include "game/platform/HeadlessContext.h"
-#include "game/play/ObjectiveHud.h"
 #include "game/play/PlayMode.h"
 #include "game/replay/FrameSelection.h"
+#include "game/replay/ObjectiveSummary.h"
 #include "game/replay/ReplayCheck.h"
 #include "game/session/GameSession.h"
 

@@ -129,15 +129,9 @@ void Boat::touch_shore(const Terrain& terrain) {
     // and the boat slides along, as off a fender.
     const glm::vec3 fwd = pose_.forward_flat();
     auto deep = [&](glm::vec2 xz) { return navigable(terrain, xz); };
-    for (float along : {0.5f * p_.length_m, -0.5f * p_.length_m}) {
-        glm::vec2 offset = glm::vec2(fwd.x, fwd.z) * along;
-        glm::vec2 end = glm::vec2(pose_.position.x, pose_.position.z) + offset;
-        if (auto edge = edge_contact(end, deep)) {
-            pose_.position.x += edge->normal.x * edge->depth_m;
-            pose_.position.z += edge->normal.y * edge->depth_m;
-            touch(offset, edge->normal);
-        }
-    }
+    const glm::vec2 bow(fwd.x * 0.5f * p_.length_m, fwd.z * 0.5f * p_.length_m);
+    push_back_across_edges(pose_.position, {bow, -bow}, deep,
+                           [&](glm::vec2 offset, glm::vec2 normal) { touch(offset, normal); });
 }
 
 void Boat::touch(glm::vec2 offset, glm::vec2 normal) {

@@ -95,8 +95,7 @@ void Car::substep(const DriveInput& in, bool reverse, const Terrain& terrain, fl
     // at least 1 m/s): the tyres' side forces fade out, so that a car at rest with the
     // wheel on full lock does not brake itself and can drive or reverse away.
     float k = std::clamp((std::fabs(u_) - 1.0f) / 2.0f, 0.0f, 1.0f);
-    float fy_f_full = -cap_f * det::tanh(p_.cornering_stiffness_npr * alpha_f / cap_f);
-    float fy_f = k * fy_f_full;
+    float fy_f = -k * cap_f * det::tanh(p_.cornering_stiffness_npr * alpha_f / cap_f);
     float fy_r = -k * cap_r * det::tanh(p_.cornering_stiffness_npr * alpha_r / cap_r);
 
     float cs = det::cos(steer_), sn = det::sin(steer_);
@@ -104,8 +103,17 @@ void Car::substep(const DriveInput& in, bool reverse, const Terrain& terrain, fl
     float dv = (fy_f * cs + fy_r) / p_.mass_kg - u_ * r_;
     float dr = (a * fy_f * cs - b * fy_r) / p_.yaw_inertia_kgm2;
     // Pressed against something, the steered front wheels still scrub the nose round
-    // the way they point: how a car nosed into a post or a wall turns off it.
-    if (scraping_s_ > 0.0f) dr += (1.0f - k) * a * fy_f_full * cs / p_.yaw_inertia_kgm2;
+    // the way they point and are driven: how a car nosed into a post or a wall turns off
+    // it. They scrub at full lock's slip, whatever the body does: held against a bollard
+    // by the quay edge the nose can only turn by sliding along the bollard, and the slip
+    // measured from that slide would all but stop it. The way the wheels are driven, not
+    // the sign of the speed: the bounce off the obstacle leaves a car pressed forward
+    // rolling back at a few mm/s, and following that would flip the scrub every substep.
+    if (scraping_s_ > 0.0f) {
+        const float driven = drive > 0.0f ? 1.0f : (drive < 0.0f ? -1.0f : travel);
+        const float fy_scrub = cap_f * det::tanh(p_.cornering_stiffness_npr * driven * steer_ / cap_f);
+        dr += (1.0f - k) * a * fy_scrub * cs / p_.yaw_inertia_kgm2;
+    }
     u_ += du * h;
     v_ += dv * h;
     r_ += dr * h;
@@ -163,17 +171,13 @@ void Car::touch_edges(const Terrain& terrain) {
         float ground = terrain.support_height(xz, y, kMaxStep_m);
         return ground >= sea + 0.1f && ground <= y + kMaxStep_m;
     };
-    const glm::vec3 fwd = pose_.forward_flat(), right = pose_.right_flat();
-    for (float along : {p_.cg_to_front_m + 0.8f, -p_.cg_to_rear_m - 0.8f})
-        for (float side : {-0.5f * kTrack_m - 0.1f, 0.5f * kTrack_m + 0.1f}) {
-            glm::vec2 offset(fwd.x * along + right.x * side, fwd.z * along + right.z * side);
-            glm::vec2 corner = glm::vec2(pose_.position.x, pose_.position.z) + offset;
-            if (auto edge = edge_contact(corner, drivable)) {
-                pose_.position.x += edge->normal.x * edge->depth_m;
-                pose_.position.z += edge->normal.y * edge->depth_m;
-                touch(offset, edge->normal);
-            }
-        }
+    const glm::vec3 fwd3 = pose_.forward_flat(), right3 = pose_.right_flat();
+    const glm::vec2 fwd(fwd3.x, fwd3.z), right(right3.x, right3.z);
+    const float front = p_.cg_to_front_m + 0.8f, rear = -p_.cg_to_rear_m - 0.8f, side = 0.5f * kTrack_m + 0.1f;
+    push_back_across_edges(pose_.position,
+                           {fwd * front - right * side, fwd * front + right * side, fwd * rear - right * side,
+                            fwd * rear + right * side},
+                           drivable, [&](glm::vec2 offset, glm::vec2 normal) { touch(offset, normal); });
 }
 
 void Car::touch(glm::vec2 offset, glm::vec2 normal) {

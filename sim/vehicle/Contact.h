@@ -4,9 +4,11 @@
 // obstacle at the touching point (a little of it bounces back), rubs off some speed
 // along it, and keeps the rest: the vehicle slides along instead of sticking.
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "sim/core/DetMath.h"
 
@@ -73,6 +75,21 @@ std::optional<EdgeContact> edge_contact(glm::vec2 point, const Allowed& allowed)
         return EdgeContact{n, hi};
     }
     return std::nullopt;
+}
+
+// Each of a vehicle's points at `offsets` from its centre (ground plane) that has left
+// the ground it may be on is put back across the edge, moving the vehicle's `position`,
+// and touches it: touch(offset, normal). The car's corners and the boat's bow and stern
+// alike; a point is tested where the pushes before it have left the vehicle.
+template <class Allowed, class Touch>
+void push_back_across_edges(glm::vec3& position, std::initializer_list<glm::vec2> offsets, const Allowed& allowed,
+                            Touch&& touch) {
+    for (glm::vec2 offset : offsets)
+        if (auto edge = edge_contact(glm::vec2(position.x, position.z) + offset, allowed)) {
+            position.x += edge->normal.x * edge->depth_m;
+            position.z += edge->normal.y * edge->depth_m;
+            touch(offset, edge->normal);
+        }
 }
 
 }  // namespace sim

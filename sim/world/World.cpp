@@ -7,7 +7,7 @@ namespace sim {
 
 namespace {
 // Bump when a change to the sim alters results for the same inputs.
-constexpr uint64_t kSimVersion = 9;
+constexpr uint64_t kSimVersion = 10;
 }  // namespace
 
 World::World(LevelDesc level, WorldOptions options)
