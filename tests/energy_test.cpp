@@ -22,12 +22,9 @@ using sim::TickInput;
 struct Harbour {
     sim::World world;
     sim::WaterSim* water = nullptr;
-    explicit Harbour(int threads = 1) : world(make_test_level(), {threads}) {
-        auto w = std::make_unique<sim::WaterSim>(sim::WaterParams{}, world.level(), world.level().seed);
-        water = w.get();
-        world.add(std::move(w));
-        world.set_sea(water);
-    }
+    explicit Harbour(int threads = 1)
+        : world(make_test_level(), sim::standard_subsystems_with_water({}), {threads}),
+          water(&world.get<sim::WaterSim>()) {}
     sim::Weapon& weapon() { return world.get<sim::Weapon>(); }
 };
 

@@ -102,20 +102,23 @@ RainForces RainSim::forces_for(float speed_mps, glm::vec2 accel_body_mps2, glm::
     return f;
 }
 
+void RainSim::connect(const SubsystemLinks& links) {
+    player_ = links.may<Player>();
+    car_ = links.may<Car>();
+    weather_ = links.may<Weather>();
+}
+
 void RainSim::step(StepContext& ctx) {
-    const Player* player = ctx.world.find<Player>();
-    const Car* car = ctx.world.find<Car>();
-    const Weather* weather = ctx.world.find<Weather>();
-    const float intensity = weather ? weather->rain_rate() : 0.0f;
-    const WiperMode wipers = player ? player->wipers() : WiperMode::Off;
+    const float intensity = weather_ ? weather_->rain_rate() : 0.0f;
+    const WiperMode wipers = player_ ? player_->wipers() : WiperMode::Off;
     RainForces forces = forces_for(0.0f, glm::vec2(0.0f), glm::vec3(0.0f, -kGravity, 0.0f));
     float speed = 0.0f;
-    if (car) {
-        const glm::mat4 m = car->pose().matrix();
+    if (car_) {
+        const glm::mat4 m = car_->pose().matrix();
         const glm::vec3 down(0.0f, -kGravity, 0.0f);  // world to model: the transposed rotation
         const glm::vec3 g(dot3(glm::vec3(m[0]), down), dot3(glm::vec3(m[1]), down), dot3(glm::vec3(m[2]), down));
-        speed = car->speed_mps();
-        forces = forces_for(speed, car->accel_body_mps2(), g);
+        speed = car_->speed_mps();
+        forces = forces_for(speed, car_->accel_body_mps2(), g);
     }
     advance(intensity, wipers, speed, forces, ctx.dt);
 }
