@@ -27,7 +27,8 @@ constexpr int kStepV[8] = {0, 1, 1, 1, 0, -1, -1, -1};
 const RainParams& checked(const RainParams& p) {
     auto refuse = [](const std::string& what) { throw std::invalid_argument("rain: " + what); };
     auto in = [](float v, float lo, float hi) { return v >= lo && v <= hi; };  // false for NaN
-    if (!in(p.cell_size_m, 0.001f, 0.05f)) refuse("cell_size_m must be in [0.001, 0.05] m, got " + num(p.cell_size_m));
+    if (!in(p.cell_size_m, kMinRainCell_m, kMaxRainCell_m))
+        refuse("cell_size_m must be in [" + num(kMinRainCell_m) + ", " + num(kMaxRainCell_m) + "] m, got " + num(p.cell_size_m));
     if (!in(p.drops_per_m2_s, 0.0f, 1e5f)) refuse("drops_per_m2_s must be in [0, 1e5], got " + num(p.drops_per_m2_s));
     if (!in(p.speed_gain_per_mps, 0.0f, 10.0f)) refuse("speed_gain_per_mps must be in [0, 10], got " + num(p.speed_gain_per_mps));
     if (!in(p.new_drop_min_mg, 0.01f, 1000.0f) || !in(p.new_drop_max_mg, p.new_drop_min_mg, 1000.0f))
