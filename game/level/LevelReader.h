@@ -35,6 +35,8 @@ inline std::string show(float v) {
 // Typed access to the level JSON; every error names the file and the JSON path.
 class LevelReader {
 public:
+    using json = nlohmann::json;
+
     explicit LevelReader(const std::filesystem::path& file) : file_(file) {}
 
     [[noreturn]] void fail(const std::string& where, const std::string& what) const {
@@ -42,7 +44,7 @@ public:
     }
 
     // `v` must be an object whose keys are all in `known` (or start with '_').
-    void object(const nlohmann::json& v, const std::string& where, std::initializer_list<std::string_view> known) const {
+    void object(const json& v, const std::string& where, std::initializer_list<std::string_view> known) const {
         if (!v.is_object()) fail(where, "expected an object");
         for (auto it = v.begin(); it != v.end(); ++it) {
             const std::string& k = it.key();
@@ -50,29 +52,29 @@ public:
             if (std::find(known.begin(), known.end(), k) == known.end()) fail(key_path(where, k), "unknown key");
         }
     }
-    const nlohmann::json& required(const nlohmann::json& obj, const std::string& where, const char* key) const {
+    const json& required(const json& obj, const std::string& where, const char* key) const {
         auto it = obj.find(key);
         if (it == obj.end()) fail(where, std::string("missing required key '") + key + "'");
         return *it;
     }
-    static const json* optional(const nlohmann::json& obj, const char* key) {
+    static const json* optional(const json& obj, const char* key) {
         auto it = obj.find(key);
         return it == obj.end() ? nullptr : &*it;
     }
-    const nlohmann::json& array(const nlohmann::json& v, const std::string& where, size_t max_size) const {
+    const json& array(const json& v, const std::string& where, size_t max_size) const {
         if (!v.is_array()) fail(where, "expected an array");
         if (v.size() > max_size)
             fail(where, std::to_string(v.size()) + " entries, at most " + std::to_string(max_size) + " allowed");
         return v;
     }
-    float number(const nlohmann::json& v, const std::string& where) const {
+    float number(const json& v, const std::string& where) const {
         if (!v.is_number()) fail(where, "expected a number");
         double d = v.get<double>();
         if (!std::isfinite(d) || !std::isfinite(float(d))) fail(where, "is not a finite number");
         return float(d);
     }
     // In [lo, hi]; the bound is left out at lo when lo_open, at hi when hi_open.
-    float number_in(const nlohmann::json& v, const std::string& where, float lo, float hi, bool lo_open = false,
+    float number_in(const json& v, const std::string& where, float lo, float hi, bool lo_open = false,
                     bool hi_open = false) const {
         float f = number(v, where);
         if (f > hi || f < lo || (lo_open && f == lo) || (hi_open && f == hi))
@@ -81,7 +83,7 @@ public:
         return f;
     }
     template <int N>
-    glm::vec<N, float> vec(const nlohmann::json& v, const std::string& where) const {
+    glm::vec<N, float> vec(const json& v, const std::string& where) const {
         const char* expected = N == 2 ? "expected an array of 2 numbers" : "expected an array of 3 numbers";
         if (!v.is_array() || v.size() != size_t(N)) fail(where, expected);
         glm::vec<N, float> out;
@@ -91,7 +93,7 @@ public:
         }
         return out;
     }
-    std::string string(const nlohmann::json& v, const std::string& where) const {
+    std::string string(const json& v, const std::string& where) const {
         if (!v.is_string()) fail(where, "expected a string");
         return v.get<std::string>();
     }
