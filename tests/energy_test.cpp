@@ -190,7 +190,7 @@ TEST(EnergyWeapon, ShotIntoTheGroundStopsWithoutASplash) {
 }
 
 TEST(EnergyWeapon, FiredFromTheCarDipsBelowTheHeadingAndHashesTheSameOnTwoThreads) {
-    sim::World one(make_test_level(), {1}), two(make_test_level(), {2});
+    sim::World one(make_test_level(), sim::WorldOptions{1}), two(make_test_level(), sim::WorldOptions{2});
     for (int t = 0; t < 200; ++t) {
         TickInput in;
         in.set(Control::Throttle, true);

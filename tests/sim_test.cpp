@@ -374,7 +374,7 @@ TickInput busy_input(uint32_t t) {
 }
 
 std::vector<sim::WorldHash> hashes(int threads, uint32_t ticks) {
-    sim::World w(make_test_level(), {threads});
+    sim::World w(make_test_level(), sim::WorldOptions{threads});
     std::vector<sim::WorldHash> out;
     for (uint32_t t = 0; t < ticks; ++t) {
         w.step(busy_input(t));
