@@ -225,7 +225,7 @@ TEST(DustClearing, AThrownStoneClearsWhereItPassedAndTheHashShowsIt) {
     ASSERT_LT(i, names.size());
     EXPECT_NE(hit.hash().parts[i], plain.hash().parts[i]);
     // The same again gives the same hash, with any thread count.
-    sim::World again(dusty_test_level(), {2});
+    sim::World again(dusty_test_level(), sim::WorldOptions{2});
     again.get<sim::ThrownObjects>().launch(sim::ThrownObjects::kHeavy, {-0.8f, 2.3f, -25.0f}, {1, 0, 0}, {-7.0f, -4.0f, 0.0f});
     for (int t = 0; t < 20; ++t) again.step({});
     EXPECT_EQ(again.hash(), hit.hash());

@@ -22,12 +22,9 @@ using sim::TickInput;
 struct Harbour {
     sim::World world;
     sim::WaterSim* water = nullptr;
-    explicit Harbour(int threads = 1) : world(make_test_level(), {threads}) {
-        auto w = std::make_unique<sim::WaterSim>(sim::WaterParams{}, world.level(), world.level().seed);
-        water = w.get();
-        world.add(std::move(w));
-        world.set_sea(water);
-    }
+    explicit Harbour(int threads = 1)
+        : world(make_test_level(), sim::standard_subsystems_with_water({}), {threads}),
+          water(&world.get<sim::WaterSim>()) {}
     sim::Weapon& weapon() { return world.get<sim::Weapon>(); }
 };
 
@@ -193,7 +190,7 @@ TEST(EnergyWeapon, ShotIntoTheGroundStopsWithoutASplash) {
 }
 
 TEST(EnergyWeapon, FiredFromTheCarDipsBelowTheHeadingAndHashesTheSameOnTwoThreads) {
-    sim::World one(make_test_level(), {1}), two(make_test_level(), {2});
+    sim::World one(make_test_level(), sim::WorldOptions{1}), two(make_test_level(), sim::WorldOptions{2});
     for (int t = 0; t < 200; ++t) {
         TickInput in;
         in.set(Control::Throttle, true);

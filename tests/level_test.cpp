@@ -16,78 +16,18 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include "LevelFiles.h"
 #include "game/DataPaths.h"
 #include "game/level/GltfModel.h"
 #include "game/level/LevelLoader.h"
 #include "game/level/LevelNames.h"
 #include "game/session/GameSession.h"
+#include "sim/rain/RainParams.h"
 #include "sim/world/Terrain.h"
 
 namespace {
 
-namespace fs = std::filesystem;
-using nlohmann::json;
-
-fs::path test_levels() { return fs::path(SPINDRIFT_TEST_DATA) / "levels"; }
-fs::path harbour_json() { return game::data_dir() / "levels" / "harbour.json"; }
-fs::path harbour_asset(const char* name) { return game::data_dir() / "levels" / "harbour" / name; }
-
-// A fresh directory under the system temp dir, removed afterwards.
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const std::string& tag) {
-        path = fs::temp_directory_path() / ("spindrift_level_test_" + tag + "_" + std::to_string(::getpid()));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-void spit(const fs::path& p, const std::string& bytes) {
-    std::ofstream out(p, std::ios::binary);
-    out << bytes;
-}
-
-// Runs `load` and expects a LevelError whose message contains every one of `words`.
-void expect_error(const std::function<void()>& load, const std::vector<std::string>& words) {
-    try {
-        load();
-        ADD_FAILURE() << "no LevelError; expected one mentioning '" << words.front() << "'";
-    } catch (const game::LevelError& e) {
-        std::string msg = e.what();
-        for (const std::string& w : words) EXPECT_NE(msg.find(w), std::string::npos) << "'" << w << "' not in: " << msg;
-        EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line expected: " << msg;
-    }
-}
-
-// One thing changed in the harbour level, and the words its LevelError must contain.
-struct LevelEdit {
-    std::function<void(json&)> edit;
-    std::vector<std::string> words;
-};
-
-// Each edit of the harbour level, written to a file of its own under `tag`, must fail to
-// load with a message naming that file and containing the edit's words.
-void expect_each_refused(const std::string& tag, const json& base, const std::vector<LevelEdit>& cases) {
-    TempDir tmp(tag);
-    for (size_t i = 0; i < cases.size(); ++i) {
-        SCOPED_TRACE("case " + std::to_string(i));
-        json j = base;
-        cases[i].edit(j);
-        fs::path file = tmp.path / ("case" + std::to_string(i) + ".json");
-        spit(file, j.dump(1));
-        std::vector<std::string> words = cases[i].words;
-        words.push_back(file.string() + ": ");
-        expect_error([&] { game::load_level(file.string()); }, words);
-    }
-}
+using namespace level_files;
 
 bool inside(const sim::Aabb& b, glm::vec3 p) {
     return p.x >= b.min.x && p.x <= b.max.x && p.y >= b.min.y && p.y <= b.max.y && p.z >= b.min.z && p.z <= b.max.z;
@@ -320,38 +260,6 @@ TEST(LevelLoader, BadDustSectionFieldsAreNamed) {
     });
 }
 
-// Courses and targets: the harbour has a car course (courses[0]) and a boat course
-// (courses[1]); broken ones are refused naming the entry.
-TEST(LevelLoader, BrokenCoursesAndTargetsAreNamed) {
-    const json harbour = json::parse(slurp(harbour_json()));
-    ASSERT_GE(harbour.at("courses").size(), 2u);
-    ASSERT_EQ(harbour["courses"][0]["vehicle"], "car");
-    ASSERT_EQ(harbour["courses"][1]["vehicle"], "boat");
-    ASSERT_GE(harbour.at("targets").size(), 1u);
-    expect_each_refused("objectives", harbour, {
-        {[](json& j) { j["courses"][0]["gates"] = json::array({j["courses"][0]["gates"][0]}); },
-         {"courses[0].gates: a course needs at least 2 gates, found 1"}},
-        {[](json& j) { j["courses"][0]["vehicle"] = "bike"; }, {"courses[0].vehicle: expected \"car\" or \"boat\", got \"bike\""}},
-        {[](json& j) { j["courses"][1]["name"] = j["courses"][0]["name"]; }, {"courses[1].name:", "names another course too"}},
-        {[](json& j) { j["courses"][0]["name"] = ""; }, {"courses[0].name: must have 1 to 32 characters"}},
-        {[](json& j) { j["courses"][0]["gates"][1]["width_m"] = 1; }, {"courses[0].gates[1].width_m: 1 is out of range [2, 40]"}},
-        {[](json& j) { j["courses"][0]["gates"][0].erase("heading_deg"); }, {"courses[0].gates[0]: missing required key 'heading_deg'"}},
-        {[](json& j) { j["courses"][0]["gates"][0]["posts"] = 2; }, {"courses[0].gates[0].posts: unknown key"}},
-        {[](json& j) { j["courses"][0]["gates"][1]["centre_xz"] = {30, 20}; }, {"courses[0].gates[1]: a car's gate must stand on land"}},
-        {[](json& j) { j["courses"][1]["gates"][1]["centre_xz"] = {30, -20}; }, {"courses[1].gates[1]: a boat's gate must stand on the sea"}},
-        {[](json& j) { j["courses"][0]["gates"][0]["centre_xz"] = {-165, -10}; }, {"courses[0].gates[0]: a post lies outside the world"}},
-        {[](json& j) { j["courses"] = json::array({j["courses"][0], j["courses"][0], j["courses"][0], j["courses"][0], j["courses"][0],
-                                                    j["courses"][0], j["courses"][0], j["courses"][0], j["courses"][0]}); },
-         {"courses: 9 entries, at most 8 allowed"}},
-        {[](json& j) { j["targets"][0]["kind"] = "duck"; }, {"targets[0].kind: expected \"buoy\" or \"crate\", got \"duck\""}},
-        {[](json& j) { j["targets"][0]["radius_m"] = 5; }, {"targets[0].radius_m: 5 is out of range [0.2, 3]"}},
-        {[](json& j) { j["targets"][0] = {{"kind", "buoy"}, {"position", {10, 1, -20}}, {"radius_m", 1}}; },
-         {"targets[0].position: a buoy must float on the sea"}},
-        {[](json& j) { j["targets"][0] = {{"kind", "crate"}, {"position", {10, 1, 20}}, {"radius_m", 1}}; },
-         {"targets[0].position: a crate must stand on land"}},
-        {[](json& j) { j["targets"][0]["position"] = {500, 1, -20}; }, {"targets[0].position: lies outside the world"}},
-    });
-}
 
 // What the wave grid and the particle fluid refuse is refused at load, naming the key
 // (not later, when the world is made, naming only the sim's parameter).
@@ -370,14 +278,16 @@ TEST(LevelLoader, WaterAndFluidValuesTheSimRefusesAreNamed) {
 }
 
 // At the edges of those ranges the loader and the sim agree: what loads, runs.
-TEST(LevelLoader, WaterAndFluidValuesAtTheSimsLimitsLoadAndRun) {
+TEST(LevelLoader, ValuesAtTheSimsLimitsLoadAndRun) {
     json j = json::parse(slurp(harbour_json()));
+    j["rain"]["cell_size_m"] = 0.05;  // sim::kMaxRainCell_m, the bound both use
     j["water"]["damping_per_s"] = 0.99;
     j["fluid"]["particle_radius_m"] = 0.04;
     j["fluid"]["tank_size_m"] = {0.16, 0.16, 0.16};  // exactly 4 radii
     j["fluid"]["particle_count"] = 1;
     game::LoadedLevel level = game::load_level_text(harbour_json(), j.dump(1));
     EXPECT_FLOAT_EQ(level.sim.water.damping_per_s, 0.99f);
+    EXPECT_EQ(level.sim.rain.cell_size_m, sim::kMaxRainCell_m);
     EXPECT_NO_THROW(game::GameSession::start(std::move(level), 1));
 }
 

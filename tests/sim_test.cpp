@@ -156,13 +156,15 @@ TEST(Car, StopsAtAWall) {
 }
 
 TEST(Boat, FloatsAtItsWaterlineAtRest) {
-    sim::World w(make_test_level());
     // Set down 0.3 m high, nose up and leaning left: it must settle level at its waterline.
-    sim::Pose start = w.get<sim::Boat>().pose();
+    const sim::LevelDesc level = make_test_level();
+    sim::Pose start = sim::Boat(level.boat_spawn).pose();
     start.position.y = 0.3f;
     start.pitch_rad = 0.15f;
     start.roll_rad = -0.2f;
-    w.get<sim::Boat>() = sim::Boat(start);
+    std::vector<sim::SubsystemEntry> list = sim::standard_subsystems();
+    sim::entry_named(list, "boat").make = [start](const sim::LevelDesc&) { return std::make_unique<sim::Boat>(start); };
+    sim::World w(level, list);
     const sim::Boat& b = w.get<sim::Boat>();
     float lowest = b.position().y;
     for (int t = 0; t < 600; ++t) {
@@ -372,7 +374,7 @@ TickInput busy_input(uint32_t t) {
 }
 
 std::vector<sim::WorldHash> hashes(int threads, uint32_t ticks) {
-    sim::World w(make_test_level(), {threads});
+    sim::World w(make_test_level(), sim::WorldOptions{threads});
     std::vector<sim::WorldHash> out;
     for (uint32_t t = 0; t < ticks; ++t) {
         w.step(busy_input(t));

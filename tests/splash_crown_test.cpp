@@ -28,13 +28,9 @@ constexpr int kWidth = 320, kHeight = 240;
 constexpr StagePasses kWaterFrame = kLitScene | kSceneCopyPass | kWaterPass | kTonemapPass;
 const glm::vec3 kDropPoint{10.0f, 1.2f, 12.0f};  // over open water, 12 m off the test level's shore
 
-sim::WaterSim& water_of(sim::World& world) {
-    if (sim::WaterSim* w = world.find<sim::WaterSim>()) return *w;
-    auto owned = std::make_unique<sim::WaterSim>(sim::WaterParams{}, world.level(), 99);
-    sim::WaterSim& w = *owned;
-    world.add(std::move(owned));
-    world.set_sea(&w);
-    return w;
+// The test level with a wave grid as the sea.
+std::unique_ptr<sim::World> world_with_water() {
+    return std::make_unique<sim::World>(make_test_level(), sim::standard_subsystems_with_water({}, 99));
 }
 
 // Drops a stone straight down at `speed`; steps until it splashes and returns the
@@ -56,8 +52,9 @@ struct Crown {
 
 // The crown a stone of this size dropped at this speed throws, measured in the sim.
 Crown measure_crown(float radius_m, float speed_mps) {
-    sim::World world(make_test_level());
-    sim::WaterSim& water = water_of(world);
+    const std::unique_ptr<sim::World> owned = world_with_water();
+    sim::World& world = *owned;
+    sim::WaterSim& water = world.get<sim::WaterSim>();
     const int k = drop_stone(world, water, {radius_m, 2600.0f, speed_mps});
     EXPECT_GE(k, 0) << "the stone never splashed";
     if (k < 0) return {};
@@ -147,8 +144,8 @@ class SplashCrownRender : public HeadlessTest {
 protected:
     void SetUp() override {
         HeadlessTest::SetUp();
-        stage_ = std::make_unique<RenderStage>(
-            make_test_level(), StageOptions{.width = kWidth, .height = kHeight, .passes = kWaterFrame});
+        stage_ = std::make_unique<RenderStage>(game::GameSession{game::LoadedLevel{}, world_with_water()},
+                                               StageOptions{.width = kWidth, .height = kHeight, .passes = kWaterFrame});
         stage_->pass<effects::WaterPass>().look().ripples = 0.0f;
     }
     void TearDown() override { stage_.reset(); }
@@ -164,7 +161,7 @@ protected:
 
 TEST_F(SplashCrownRender, TheRisingCrownIsOneSheet) {
     sim::World& world = stage_->world();
-    sim::WaterSim& water = water_of(world);
+    sim::WaterSim& water = world.get<sim::WaterSim>();
     const int k = drop_stone(world, water, sim::ThrownObjects::kHeavy);
     ASSERT_GE(k, 0) << "the stone never splashed";
     const glm::vec2 centre = water.sheets()[size_t(k)].centre_xz();

@@ -110,8 +110,12 @@ class WaterRenderTest : public HeadlessTest {
 protected:
     void SetUp() override {
         HeadlessTest::SetUp();
-        stage_ = std::make_unique<RenderStage>(
-            make_test_level(), StageOptions{.width = kWidth, .height = kHeight, .passes = kWaterFrame});
+        use_world(std::make_unique<sim::World>(make_test_level()));
+    }
+    // The test level's world, or one of the test's own.
+    void use_world(std::unique_ptr<sim::World> world) {
+        stage_ = std::make_unique<RenderStage>(game::GameSession{game::LoadedLevel{}, std::move(world)},
+                                               StageOptions{.width = kWidth, .height = kHeight, .passes = kWaterFrame});
         // Wind ripples would add detail everywhere that the comparisons below must
         // see through; they are tested on their own.
         water_pass().look().ripples = 0.0f;
@@ -306,7 +310,7 @@ TEST_F(WaterRenderTest, WithoutAGridTheFlatSeaLiesAtSeaLevel) {
 }
 
 TEST_F(WaterRenderTest, AWorldWithoutWaterSimDrawsTheSameFlatSea) {
-    if (stage_->world().find<sim::WaterSim>()) GTEST_SKIP() << "the standard world has a WaterSim";
+    ASSERT_EQ(stage_->world().find<sim::WaterSim>(), nullptr) << "the test level has no wave grid";
     WaterView flat;
     render(&flat);
     auto expected = stage_->ldr();
@@ -517,14 +521,9 @@ TEST_F(WaterRenderTest, InconsistentViewsAreRefusedWithAClearMessage) {
 }
 
 TEST_F(WaterRenderTest, AStoneThrownIntoTheWaterSimMakesARingASplashAndSpray) {
+    use_world(std::make_unique<sim::World>(make_test_level(), sim::standard_subsystems_with_water({}, 99)));
     sim::World& world = stage_->world();
-    sim::WaterSim* water = world.find<sim::WaterSim>();
-    if (!water) {
-        auto owned = std::make_unique<sim::WaterSim>(sim::WaterParams{}, world.level(), 99);
-        water = owned.get();
-        world.add(std::move(owned));
-        world.set_sea(water);
-    }
+    const sim::WaterSim* water = &world.get<sim::WaterSim>();
     sim::CameraView close;  // near the quay, looking out at where the stone lands
     close.eye = {10.0f, 2.5f, 4.0f};
     close.target = {10.0f, 0.3f, 12.0f};

@@ -155,18 +155,13 @@ TEST(SprayParticles, FlyOutwardAndUpThenLandWithARipple) {
     EXPECT_THROW(sim::SprayParticles(sim::SprayParams{.max_particles = size_t(1) << 40}), std::invalid_argument);
 }
 
-// A world from the code-built test level with a WaterSim added last and installed as
-// the sea (the standard subsystem list may or may not have one; this one is ours).
+// A world from the code-built test level with a wave grid of the test's own as the sea.
 struct Harbour {
     sim::World world;
     sim::WaterSim* water = nullptr;
     explicit Harbour(sim::LevelDesc level, int threads = 1, sim::WaterParams params = {})
-        : world(std::move(level), {threads}) {
-        auto w = std::make_unique<sim::WaterSim>(params, world.level(), world.level().seed);
-        water = w.get();
-        world.add(std::move(w));
-        world.set_sea(water);
-    }
+        : world(std::move(level), sim::standard_subsystems_with_water(params), {threads}),
+          water(&world.get<sim::WaterSim>()) {}
 };
 
 // Dropped (no throw speed) from 4 m above the sea, away from the pier.

@@ -1,5 +1,6 @@
 #include "effects/rain/ReferenceHeightMap.h"
 
+#include "effects/rain/DropTiles.h"
 #include "effects/rain/MetaballReference.h"
 
 namespace effects {

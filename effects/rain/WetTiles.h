@@ -5,7 +5,7 @@
 // to zero, which is what those passes write on dry glass.
 #include "effects/gl/Buffer.h"
 #include "effects/gl/Program.h"
-#include "effects/rain/MetaballReference.h"
+#include "effects/rain/DropTiles.h"
 
 namespace effects {
 

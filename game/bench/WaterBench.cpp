@@ -125,15 +125,12 @@ void bench_whole_water(BenchReport& report, int ticks) {
     sim::LevelDesc level = load_level("harbour").sim;
     level.car_spawn.position = level.boat_spawn.position + glm::vec3(-7.0f, 1.2f, -14.0f);
     level.rain_intensity = 1.0f;
-    level.water.enabled = false;  // the bench adds its own, with more bow spray
-    sim::World world(level, {1});
     sim::WaterParams params;
-    params.bow_spray_per_m = 4000.0f;
-    auto owned = std::make_unique<sim::WaterSim>(params, world.level(), world.level().seed);
-    sim::WaterSim* water = owned.get();
-    world.add(std::move(owned));
-    world.set_sea(water);
-    const size_t water_index = world.subsystems().size() - 1;
+    params.bow_spray_per_m = 4000.0f;  // more bow spray than the level's water
+    sim::World world(level, sim::standard_subsystems_with_water(params), {1});
+    const sim::WaterSim& water = world.get<sim::WaterSim>();
+    const std::vector<std::string> names = world.subsystem_names();
+    const size_t water_index = size_t(std::find(names.begin(), names.end(), "water") - names.begin());
 
     auto input = [](int t) {
         sim::TickInput in;
@@ -150,7 +147,7 @@ void bench_whole_water(BenchReport& report, int ticks) {
     size_t droplets = 0;
     for (int k = 0; k < ticks; ++k, ++t) {
         world.step(input(t), &timer);
-        droplets += water->spray().particles().size();
+        droplets += water.spray().particles().size();
     }
     report.add({"water", "whole water sim per tick (1 thread)", timer.total_seconds()[water_index] * 1e3 / ticks,
                 "ms", 3.0, false,

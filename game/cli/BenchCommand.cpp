@@ -1,4 +1,5 @@
 // spindrift bench [--json FILE] [--quick] [--only GROUP,...]
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -19,6 +20,7 @@
 #include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
 #include "game/cli/Args.h"
+#include "game/cli/BenchGroups.h"
 #include "game/cli/Commands.h"
 #include "game/cli/ExitCode.h"
 #include "game/platform/HeadlessContext.h"
@@ -120,15 +122,12 @@ int bench_command(const std::vector<std::string>& argv) {
     if (!args.positional().empty()) throw UsageError("bench takes no positional arguments");
     const bool quick = args.flag("--quick");
     // --only a,b: just those groups, to measure one effect without the rest.
-    const std::set<std::string> groups = {"sim",    "replay", "water", "dust", "fluid",
-                                          "render", "energy", "rain",  "play"};
     std::set<std::string> only;
     if (auto list = args.value("--only")) {
         std::stringstream in(*list);
         for (std::string g; std::getline(in, g, ',');) {
-            if (!groups.count(g))
-                throw UsageError("--only: unknown group '" + g +
-                                 "' (sim, replay, water, dust, fluid, render, energy, rain, play)");
+            if (std::find(kBenchGroups.begin(), kBenchGroups.end(), g) == kBenchGroups.end())
+                throw UsageError("--only: unknown group '" + g + "' (" + bench_groups(", ") + ")");
             only.insert(g);
         }
     }

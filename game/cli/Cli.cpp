@@ -9,6 +9,7 @@
 
 #include "game/capture/CaptureError.h"
 #include "game/cli/Args.h"
+#include "game/cli/BenchGroups.h"
 #include "game/cli/Commands.h"
 #include "game/cli/ExitCode.h"
 #include "game/level/LevelError.h"
@@ -21,7 +22,7 @@ namespace game {
 namespace {
 
 // The help text; {auto_scales} stands for auto's render scales, which come from the
-// resolution controller's own range (help_text()).
+// resolution controller's own range, and {bench_groups} for bench's groups (help_text()).
 constexpr const char* kHelp = R"(spindrift: a car-and-boat harbour game driving five real-time water and weather effects.
 
 usage: spindrift <command> [options]
@@ -49,7 +50,7 @@ commands:
          1280x720), check its hashes, and report frames, fps, frame-time p50/p95/p99 and
          worst, per-pass means, the render scale over time, game time / wall time and a
          trivial full-screen fill, every time also in fills; --json writes it as JSON.
-  bench  [--json FILE] [--quick] [--only sim,replay,water,dust,fluid,render,energy,rain,play]
+  bench  [--json FILE] [--quick] [--only {bench_groups}]
          Time the sim per subsystem, the replay check and each render pass at 1280x720
          and 640x360, and (play) the timedemo of every bundled replay at 1280x720 for
          each quality; prints a table and writes JSON.
@@ -87,8 +88,11 @@ std::string help_text() {
     char range[32];
     std::snprintf(range, sizeof range, "%g..%g", double(auto_scales.min_scale), double(auto_scales.max_scale));
     std::string text = kHelp;
-    const std::string mark = "{auto_scales}";
-    text.replace(text.find(mark), mark.size(), range);
+    const auto fill = [&text](const std::string& mark, const std::string& value) {
+        text.replace(text.find(mark), mark.size(), value);
+    };
+    fill("{auto_scales}", range);
+    fill("{bench_groups}", bench_groups(","));
     return text;
 }
 

@@ -10,7 +10,7 @@ int record_command(const std::vector<std::string>& args);
 int replay_command(const std::vector<std::string>& args);
 int bench_command(const std::vector<std::string>& args);
 int timedemo_command(const std::vector<std::string>& args);
-int fibres_command(const std::vector<std::string>& args);  // game/dust/FibresCommand.cpp
+int fibres_command(const std::vector<std::string>& args);
 
 // Whether a window can be opened here (an X11 or Wayland display is set).
 bool display_available();

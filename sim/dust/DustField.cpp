@@ -90,11 +90,16 @@ bool DustField::clear_along(glm::vec3 p0, glm::vec3 p1, float radius_m) {
     return changed;
 }
 
+void DustField::connect(const SubsystemLinks& links) {
+    thrown_ = &links.need<ThrownObjects>();
+    weapon_ = &links.need<Weapon>();
+}
+
 void DustField::step(StepContext& ctx) {
     // Where each object went this tick: back along its velocity to where it was.
-    for (const ThrownObject& o : ctx.world.get<ThrownObjects>().objects())
+    for (const ThrownObject& o : thrown_->objects())
         clear_along(o.position - o.velocity * ctx.dt, o.position, o.radius_m + desc_.object_clear_radius_m);
-    const Weapon& weapon = ctx.world.get<Weapon>();
+    const Weapon& weapon = *weapon_;
     const float full = weapon.params().strength;
     for (const Shot& s : weapon.shots())
         for (const EnergySegment& seg : s.segments) {

@@ -16,12 +16,17 @@
 
 namespace sim {
 
+class ThrownObjects;
+class Weapon;
+
 class DustField final : public Subsystem {
 public:
     // Throws std::invalid_argument naming the parameter or prop that cannot be used.
     explicit DustField(const DustDesc& desc);
 
-    std::string_view name() const override { return "dust"; }
+    static constexpr std::string_view kName = "dust";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -45,6 +50,10 @@ private:
     std::vector<float> amounts_;
     std::vector<std::vector<glm::vec3>> sources_;
     uint64_t revision_ = 0;
+
+    // Connected at assembly (connect).
+    const ThrownObjects* thrown_ = nullptr;
+    const Weapon* weapon_ = nullptr;
 };
 
 }  // namespace sim

@@ -47,17 +47,22 @@ FluidTank::FluidTank(const FluidTankDesc& desc, glm::vec3 tank_spot, uint64_t se
     tank_to_world_ = glm::translate(glm::mat4(1.0f), spot_ - glm::vec3(0.5f * s.x, 0.0f, 0.5f * s.z));
 }
 
-glm::mat4 FluidTank::pose_at(const World& world) const {
+void FluidTank::connect(const SubsystemLinks& links) {
+    boat_ = links.may<Boat>();
+    thrown_ = links.may<ThrownObjects>();
+}
+
+glm::mat4 FluidTank::pose() const {
     const glm::vec3 s = desc_.inner_size_m;
     const glm::mat4 corner = glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f * s.x, 0.0f, -0.5f * s.z));
     if (desc_.on_boat)
-        if (const Boat* boat = world.find<Boat>())
-            return boat->pose().matrix() * glm::translate(glm::mat4(1.0f), kBoatDeckOffset) * corner;
+        if (boat_)
+            return boat_->pose().matrix() * glm::translate(glm::mat4(1.0f), kBoatDeckOffset) * corner;
     return glm::translate(glm::mat4(1.0f), spot_) * corner;
 }
 
 void FluidTank::step(StepContext& ctx) {
-    tank_to_world_ = pose_at(ctx.world);
+    tank_to_world_ = pose();
     const glm::vec3 origin(tank_to_world_[3]);
     // The tank's own acceleration from its last three origins; in its frame the liquid
     // feels gravity less that acceleration.
@@ -76,9 +81,9 @@ void FluidTank::step(StepContext& ctx) {
 
     spheres_.clear();
     objects_inside_ = 0;
-    if (const ThrownObjects* objects = ctx.world.find<ThrownObjects>()) {
+    if (thrown_) {
         const glm::vec3 size = desc_.inner_size_m;
-        for (const ThrownObject& o : objects->objects()) {
+        for (const ThrownObject& o : thrown_->objects()) {
             const glm::vec3 local = to_tank * (o.position - origin);
             const float r = o.radius_m;
             if (local.x < -r || local.x > size.x + r || local.z < -r || local.z > size.z + r || local.y < -r ||

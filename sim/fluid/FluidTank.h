@@ -14,6 +14,9 @@
 
 namespace sim {
 
+class Boat;
+class ThrownObjects;
+
 class FluidTank final : public Subsystem {
 public:
     // Where the tank sits on the boat, in the boat's model space (floor centre); a tank
@@ -23,7 +26,9 @@ public:
     // Throws std::invalid_argument naming the field for unusable parameters.
     FluidTank(const FluidTankDesc& desc, glm::vec3 tank_spot, uint64_t seed);
 
-    std::string_view name() const override { return "fluid"; }
+    static constexpr std::string_view kName = "fluid";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -37,7 +42,7 @@ public:
     bool asleep() const { return asleep_; }
 
 private:
-    glm::mat4 pose_at(const class World& world) const;
+    glm::mat4 pose() const;  // on the boat when it rides one, else at its spot
 
     FluidTankDesc desc_;
     glm::vec3 spot_;
@@ -52,6 +57,10 @@ private:
     uint32_t calm_ticks_ = 0;
     bool asleep_ = true;
     std::vector<FluidSphere> spheres_;  // scratch
+
+    // Connected at assembly (connect); nullptr where the world has none.
+    const Boat* boat_ = nullptr;
+    const ThrownObjects* thrown_ = nullptr;
 };
 
 // The glass panes of a tank standing at `spot` (floor centre), as solids for vehicles

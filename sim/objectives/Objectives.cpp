@@ -23,17 +23,24 @@ const Course* Objectives::course_for(CourseVehicle vehicle) const {
     return nullptr;
 }
 
+void Objectives::connect(const SubsystemLinks& links) {
+    car_ = &links.need<Car>();
+    boat_ = &links.need<Boat>();
+    thrown_ = &links.need<ThrownObjects>();
+    weapon_ = &links.need<Weapon>();
+}
+
 void Objectives::step(StepContext& ctx) {
     const uint64_t ticks = ctx.tick + 1;  // the world's tick count once this step is done
-    const glm::vec2 car = ground_xz(ctx.world.get<Car>().position());
-    const glm::vec2 boat = ground_xz(ctx.world.get<Boat>().position());
+    const glm::vec2 car = ground_xz(car_->position());
+    const glm::vec2 boat = ground_xz(boat_->position());
     for (Course& c : courses_) {
         if (c.desc().vehicle == CourseVehicle::Car) c.advance(car_xz_, car, ticks);
         else c.advance(boat_xz_, boat, ticks);
     }
     car_xz_ = car;
     boat_xz_ = boat;
-    targets_.hit_by(ctx.world.get<ThrownObjects>().objects(), ctx.world.get<Weapon>().shots(), ticks);
+    targets_.hit_by(thrown_->objects(), weapon_->shots(), ticks);
 }
 
 uint64_t Objectives::hash() const {

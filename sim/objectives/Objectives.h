@@ -16,12 +16,19 @@
 
 namespace sim {
 
+class Car;
+class Boat;
+class ThrownObjects;
+class Weapon;
+
 class Objectives final : public Subsystem {
 public:
     // The vehicles' positions on the ground at the start: the first move is from there.
     Objectives(const ObjectivesDesc& desc, glm::vec2 car_xz, glm::vec2 boat_xz);
 
-    std::string_view name() const override { return "objectives"; }
+    static constexpr std::string_view kName = "objectives";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -34,6 +41,12 @@ private:
     std::vector<Course> courses_;
     Targets targets_;
     glm::vec2 car_xz_, boat_xz_;  // as of the last tick
+
+    // Connected at assembly (connect).
+    const Car* car_ = nullptr;
+    const Boat* boat_ = nullptr;
+    const ThrownObjects* thrown_ = nullptr;
+    const Weapon* weapon_ = nullptr;
 };
 
 }  // namespace sim

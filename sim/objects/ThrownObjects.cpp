@@ -127,17 +127,23 @@ void ThrownObjects::launch(const ThrowKind& kind, glm::vec3 from, glm::vec3 forw
     objects_.push_back(o);
 }
 
+void ThrownObjects::connect(const SubsystemLinks& links) {
+    player_ = &links.need<Player>();
+    car_ = &links.need<Car>();
+    boat_ = &links.need<Boat>();
+}
+
 void ThrownObjects::step(StepContext& ctx) {
-    const Player& player = ctx.world.get<Player>();
+    const Player& player = *player_;
     if (player.throws_heavy() || player.throws_light()) {
         Pose pose;
         glm::vec3 vel;
         if (player.vehicle() == Vehicle::Car) {
-            pose = ctx.world.get<Car>().pose();
-            vel = ctx.world.get<Car>().velocity();
+            pose = car_->pose();
+            vel = car_->velocity();
         } else {
-            pose = ctx.world.get<Boat>().pose();
-            vel = ctx.world.get<Boat>().velocity();
+            pose = boat_->pose();
+            vel = boat_->velocity();
         }
         glm::vec3 fwd = pose.forward_flat();
         glm::vec3 from = pose.position + glm::vec3(0.0f, 1.8f, 0.0f) + fwd * 0.5f;

@@ -11,6 +11,10 @@
 
 namespace sim {
 
+class Player;
+class Car;
+class Boat;
+
 struct ThrownObject {
     glm::vec3 position{0.0f};
     glm::vec3 velocity{0.0f};
@@ -40,7 +44,9 @@ public:
     static constexpr ThrowKind kHeavy{0.22f, 2600.0f, 11.0f};  // a stone
     static constexpr ThrowKind kLight{0.30f, 240.0f, 12.0f};   // a cork float
 
-    std::string_view name() const override { return "objects"; }
+    static constexpr std::string_view kName = "objects";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -50,6 +56,11 @@ public:
 
 private:
     std::vector<ThrownObject> objects_;  // oldest first
+
+    // Connected at assembly (connect).
+    const Player* player_ = nullptr;
+    const Car* car_ = nullptr;
+    const Boat* boat_ = nullptr;
 };
 
 // Submerged volume of a sphere of radius r whose centre is `depth` below the surface.

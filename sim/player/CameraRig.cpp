@@ -19,11 +19,17 @@ constexpr float kMovingBackwards_mps = 0.5f;
 
 CameraRig::CameraRig(CameraRigParams params) : p_(params) {}
 
+void CameraRig::connect(const SubsystemLinks& links) {
+    player_ = &links.need<Player>();
+    car_ = &links.need<Car>();
+    boat_ = &links.need<Boat>();
+}
+
 void CameraRig::step(StepContext& ctx) {
-    const Player& player = ctx.world.get<Player>();
+    const Player& player = *player_;
     bool in_car = player.vehicle() == Vehicle::Car;
-    const Pose& pose = in_car ? ctx.world.get<Car>().pose() : ctx.world.get<Boat>().pose();
-    float speed = in_car ? ctx.world.get<Car>().speed_mps() : ctx.world.get<Boat>().speed_mps();
+    const Pose& pose = in_car ? car_->pose() : boat_->pose();
+    float speed = in_car ? car_->speed_mps() : boat_->speed_mps();
 
     // Reversing for a moment swings the chase camera round to look the way the vehicle
     // goes; driving forwards again swings it back.

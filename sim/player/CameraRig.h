@@ -8,6 +8,10 @@
 
 namespace sim {
 
+class Player;
+class Car;
+class Boat;
+
 struct CameraView {
     glm::vec3 eye{0.0f, 5.0f, 10.0f};
     glm::vec3 target{0.0f};
@@ -31,7 +35,9 @@ class CameraRig final : public Subsystem {
 public:
     explicit CameraRig(CameraRigParams params = {});
 
-    std::string_view name() const override { return "camera"; }
+    static constexpr std::string_view kName = "camera";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -46,6 +52,11 @@ private:
     bool looking_back_ = false;
     float swing_ = 0.0f;        // 0 behind the nose .. 1 behind the tail, looking where it reverses
 
+
+    // Connected at assembly (connect).
+    const Player* player_ = nullptr;
+    const Car* car_ = nullptr;
+    const Boat* boat_ = nullptr;
 };
 
 }  // namespace sim

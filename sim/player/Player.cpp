@@ -11,6 +11,11 @@ namespace sim {
 
 Player::Player(float rain_intensity) : rain_intensity_(std::clamp(rain_intensity, 0.0f, 1.0f)) {}
 
+void Player::connect(const SubsystemLinks& links) {
+    car_ = &links.need<Car>();
+    boat_ = &links.need<Boat>();
+}
+
 void Player::step(StepContext& ctx) {
     const TickInput& in = ctx.input;
     controls_.throttle = throttle_amount(in);
@@ -18,8 +23,8 @@ void Player::step(StepContext& ctx) {
     controls_.steer = steer_amount(in);
 
     if (ctx.pressed(Control::SwitchVehicle)) {
-        glm::vec3 car = ctx.world.get<Car>().position();
-        glm::vec3 boat = ctx.world.get<Boat>().position();
+        glm::vec3 car = car_->position();
+        glm::vec3 boat = boat_->position();
         glm::vec2 d(car.x - boat.x, car.z - boat.z);
         if (d.x * d.x + d.y * d.y <= kSwitchDistance_m * kSwitchDistance_m)
             vehicle_ = vehicle_ == Vehicle::Car ? Vehicle::Boat : Vehicle::Car;

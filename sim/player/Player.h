@@ -7,6 +7,9 @@
 
 namespace sim {
 
+class Car;
+class Boat;
+
 enum class Vehicle : uint8_t { Car, Boat };
 enum class ViewMode : uint8_t { Chase, Driver };
 enum class WiperMode : uint8_t { Off, Intermittent, Low, High };
@@ -25,7 +28,9 @@ public:
 
     explicit Player(float rain_intensity);
 
-    std::string_view name() const override { return "player"; }
+    static constexpr std::string_view kName = "player";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -49,6 +54,10 @@ private:
     float rain_intensity_ = 0.0f;
     DriveInput controls_;
     bool throw_heavy_ = false, throw_light_ = false, fire_ = false, reset_ = false;
+
+    // Connected at assembly (connect).
+    const Car* car_ = nullptr;
+    const Boat* boat_ = nullptr;
 };
 
 }  // namespace sim

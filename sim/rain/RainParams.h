@@ -19,8 +19,12 @@ struct WiperLayout {
     float rest_rad = 0.05f, sweep_rad = 2.1f;
 };
 
+// The drop grid's cell sizes the sim runs: RainSim refuses others, and the level
+// loader refuses them first, naming the level file's key.
+inline constexpr float kMinRainCell_m = 0.001f, kMaxRainCell_m = 0.05f;
+
 struct RainParams {
-    float cell_size_m = 0.008f;
+    float cell_size_m = 0.008f;  // in [kMinRainCell_m, kMaxRainCell_m]
 
     // Rain: new drops per square metre of glass per second at intensity 1, more with
     // forward speed; their masses are uniform in [min, max].

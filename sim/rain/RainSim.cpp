@@ -27,7 +27,8 @@ constexpr int kStepV[8] = {0, 1, 1, 1, 0, -1, -1, -1};
 const RainParams& checked(const RainParams& p) {
     auto refuse = [](const std::string& what) { throw std::invalid_argument("rain: " + what); };
     auto in = [](float v, float lo, float hi) { return v >= lo && v <= hi; };  // false for NaN
-    if (!in(p.cell_size_m, 0.001f, 0.05f)) refuse("cell_size_m must be in [0.001, 0.05] m, got " + num(p.cell_size_m));
+    if (!in(p.cell_size_m, kMinRainCell_m, kMaxRainCell_m))
+        refuse("cell_size_m must be in [" + num(kMinRainCell_m) + ", " + num(kMaxRainCell_m) + "] m, got " + num(p.cell_size_m));
     if (!in(p.drops_per_m2_s, 0.0f, 1e5f)) refuse("drops_per_m2_s must be in [0, 1e5], got " + num(p.drops_per_m2_s));
     if (!in(p.speed_gain_per_mps, 0.0f, 10.0f)) refuse("speed_gain_per_mps must be in [0, 10], got " + num(p.speed_gain_per_mps));
     if (!in(p.new_drop_min_mg, 0.01f, 1000.0f) || !in(p.new_drop_max_mg, p.new_drop_min_mg, 1000.0f))
@@ -102,20 +103,23 @@ RainForces RainSim::forces_for(float speed_mps, glm::vec2 accel_body_mps2, glm::
     return f;
 }
 
+void RainSim::connect(const SubsystemLinks& links) {
+    player_ = links.may<Player>();
+    car_ = links.may<Car>();
+    weather_ = links.may<Weather>();
+}
+
 void RainSim::step(StepContext& ctx) {
-    const Player* player = ctx.world.find<Player>();
-    const Car* car = ctx.world.find<Car>();
-    const Weather* weather = ctx.world.find<Weather>();
-    const float intensity = weather ? weather->rain_rate() : 0.0f;
-    const WiperMode wipers = player ? player->wipers() : WiperMode::Off;
+    const float intensity = weather_ ? weather_->rain_rate() : 0.0f;
+    const WiperMode wipers = player_ ? player_->wipers() : WiperMode::Off;
     RainForces forces = forces_for(0.0f, glm::vec2(0.0f), glm::vec3(0.0f, -kGravity, 0.0f));
     float speed = 0.0f;
-    if (car) {
-        const glm::mat4 m = car->pose().matrix();
+    if (car_) {
+        const glm::mat4 m = car_->pose().matrix();
         const glm::vec3 down(0.0f, -kGravity, 0.0f);  // world to model: the transposed rotation
         const glm::vec3 g(dot3(glm::vec3(m[0]), down), dot3(glm::vec3(m[1]), down), dot3(glm::vec3(m[2]), down));
-        speed = car->speed_mps();
-        forces = forces_for(speed, car->accel_body_mps2(), g);
+        speed = car_->speed_mps();
+        forces = forces_for(speed, car_->accel_body_mps2(), g);
     }
     advance(intensity, wipers, speed, forces, ctx.dt);
 }

@@ -24,6 +24,10 @@
 
 namespace sim {
 
+class Player;
+class Car;
+class Weather;
+
 struct RainDrop {
     glm::vec2 pos_m{0.0f};    // glass coordinates, inside cell
     glm::vec2 vel_mps{0.0f};
@@ -57,7 +61,9 @@ public:
     RainSim(const RainParams& params, std::vector<glm::vec3> glass_lower, std::vector<glm::vec3> glass_upper,
             uint64_t seed);
 
-    std::string_view name() const override { return "rain"; }
+    static constexpr std::string_view kName = "rain";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -113,6 +119,11 @@ private:
     float hold_ref_;                     // what holds a slide-mass drop, m/s^2
     float slide_r_m_;
     ParticleCollider collider_;          // scratch for the particle collisions
+
+    // Connected at assembly (connect); nullptr where the world has none.
+    const Player* player_ = nullptr;
+    const Car* car_ = nullptr;
+    const Weather* weather_ = nullptr;
 };
 
 }  // namespace sim

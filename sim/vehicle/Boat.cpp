@@ -36,8 +36,10 @@ glm::vec2 Boat::hull_point(int i) const {
 
 glm::vec3 Boat::velocity() const { return u_ * pose_.forward_flat() - v_ * pose_.right_flat(); }
 
+void Boat::connect(const SubsystemLinks& links) { player_ = &links.need<Player>(); }
+
 void Boat::step(StepContext& ctx) {
-    const Player& player = ctx.world.get<Player>();
+    const Player& player = *player_;
     if (player.resets() && player.vehicle() == Vehicle::Boat) reset(ctx.world.terrain());
     DriveInput in = player.drive_input(Vehicle::Boat);
     float h = ctx.dt / kSubsteps;

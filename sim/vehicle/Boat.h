@@ -8,6 +8,8 @@
 
 namespace sim {
 
+class Player;
+
 struct BoatParams {
     float mass_kg = 1500.0f;
     float length_m = 6.0f;
@@ -30,7 +32,9 @@ public:
     // Set down in any attitude (a boat dropped in, or knocked over by a wave), at rest.
     explicit Boat(const Pose& start, BoatParams params = {});
 
-    std::string_view name() const override { return "boat"; }
+    static constexpr std::string_view kName = "boat";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -58,6 +62,9 @@ private:
     Pose pose_;
     float u_ = 0.0f, v_ = 0.0f, r_ = 0.0f;  // forward, leftward speed; yaw rate
     float heave_rate_ = 0.0f, pitch_rate_ = 0.0f, roll_rate_ = 0.0f;
+
+    // Connected at assembly (connect).
+    const Player* player_ = nullptr;
 };
 
 }  // namespace sim

@@ -37,9 +37,11 @@ glm::vec3 Car::velocity() const {
     return u_ * pose_.forward_flat() + v_ * left;
 }
 
+void Car::connect(const SubsystemLinks& links) { player_ = &links.need<Player>(); }
+
 void Car::step(StepContext& ctx) {
     const Terrain& terrain = ctx.world.terrain();
-    const Player& player = ctx.world.get<Player>();
+    const Player& player = *player_;
     if (player.resets() && player.vehicle() == Vehicle::Car) reset(terrain);
     DriveInput in = player.drive_input(Vehicle::Car);
     float u0 = u_, v0 = v_;

@@ -8,6 +8,8 @@
 
 namespace sim {
 
+class Player;
+
 struct CarParams {
     float mass_kg = 1300.0f;
     float yaw_inertia_kgm2 = 2000.0f;
@@ -33,7 +35,9 @@ class Car final : public Subsystem {
 public:
     Car(const Spawn& spawn, CarParams params = {});
 
-    std::string_view name() const override { return "car"; }
+    static constexpr std::string_view kName = "car";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -66,6 +70,9 @@ private:
     float wheel_spin_ = 0.0f;
     float scraping_s_ = 0.0f;  // time left of the last contact's hold on the tyres
     glm::vec2 accel_{0.0f};
+
+    // Connected at assembly (connect).
+    const Player* player_ = nullptr;
 };
 
 }  // namespace sim

@@ -216,17 +216,21 @@ void WaterSim::boat(const Boat& b, uint64_t tick) {
     spray_.emit_splash({bow.x, height_at(bow_xz), bow.z}, ring, vel, count, rng_, ahead);
 }
 
+void WaterSim::connect(const SubsystemLinks& links) {
+    weather_ = links.may<Weather>();
+    boat_ = links.may<Boat>();
+}
+
 void WaterSim::step(StepContext& ctx) {
     if (ctx.dt != dt_)
         throw std::logic_error("WaterSim: the wave grid was built for dt = " + num(dt_) + " s, stepped with " +
                                num(ctx.dt) + " s");
     splashes_.clear();
     ripples_.clear();
-    World& world = ctx.world;
-    if (const Weather* weather = world.find<Weather>()) rain(weather->rain_rate());
+    if (weather_) rain(weather_->rain_rate());
     second_splashes();
-    for (const WaterEntry& e : world.events().water_entries) impact(e, ctx.tick);
-    if (const Boat* b = world.find<Boat>()) boat(*b, ctx.tick);
+    for (const WaterEntry& e : ctx.world.events().water_entries) impact(e, ctx.tick);
+    if (boat_) boat(*boat_, ctx.tick);
 
     grid_.step(ctx.jobs);
     for (SplashSheet& s : sheets_) {

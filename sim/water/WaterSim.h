@@ -2,7 +2,7 @@
 // The harbour water of seed 003 (Sasano 2004; docs/effects/water.md): a wave-equation grid
 // over the harbour, splash sheets that rise from it where things hit the water, spray
 // particles, and the coupling to the boat, thrown objects and rain. It is also the
-// sea surface that floating bodies ride (World::set_sea).
+// sea surface that floating bodies ride (Subsystem::sea_surface).
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +20,7 @@
 namespace sim {
 
 class Boat;
+class Weather;
 struct WaterEntry;
 
 struct WaterParams {
@@ -59,7 +60,10 @@ public:
     // naming the bound for unstable or absurd parameters.
     WaterSim(const WaterParams& params, const LevelDesc& level, uint64_t seed);
 
-    std::string_view name() const override { return "water"; }
+    static constexpr std::string_view kName = "water";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
+    const SeaSurface* sea_surface() const override { return this; }
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
     float height_at(glm::vec2 xz) const override;  // sea level + wave height
@@ -104,6 +108,10 @@ private:
     Rng rng_;
     std::vector<SplashEvent> splashes_;
     std::vector<Ripple> ripples_;  // scratch: where sheet vertices and droplets fell back
+
+    // Connected at assembly (connect); nullptr where the world has none.
+    const Weather* weather_ = nullptr;
+    const Boat* boat_ = nullptr;
 };
 
 }  // namespace sim

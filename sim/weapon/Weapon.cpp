@@ -107,10 +107,16 @@ void Weapon::advance(Shot& s, const World& world, float dt, std::vector<WaterEnt
     shape(s, dt);
 }
 
+void Weapon::connect(const SubsystemLinks& links) {
+    player_ = &links.need<Player>();
+    car_ = &links.need<Car>();
+    boat_ = &links.need<Boat>();
+}
+
 void Weapon::step(StepContext& ctx) {
-    const Player& player = ctx.world.get<Player>();
+    const Player& player = *player_;
     if (player.fires()) {
-        const Pose& pose = player.vehicle() == Vehicle::Car ? ctx.world.get<Car>().pose() : ctx.world.get<Boat>().pose();
+        const Pose& pose = player.vehicle() == Vehicle::Car ? car_->pose() : boat_->pose();
         const glm::vec3 fwd = pose.forward_flat();
         const glm::vec3 aim = fwd * det::cos(p_.dip_rad) - glm::vec3(0.0f, det::sin(p_.dip_rad), 0.0f);
         fire(pose.position + glm::vec3(0.0f, p_.muzzle_height_m, 0.0f) + fwd * p_.muzzle_ahead_m, aim);

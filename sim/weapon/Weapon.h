@@ -17,6 +17,10 @@
 
 namespace sim {
 
+class Player;
+class Car;
+class Boat;
+
 struct Shot {
     static constexpr int kSegments = 4;
     glm::vec3 origin{0.0f};
@@ -52,7 +56,9 @@ public:
 
     explicit Weapon(uint64_t seed, WeaponParams params = {});
 
-    std::string_view name() const override { return "weapon"; }
+    static constexpr std::string_view kName = "weapon";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -68,6 +74,11 @@ private:
     WeaponParams p_;
     Rng rng_;
     std::vector<Shot> shots_;
+
+    // Connected at assembly (connect).
+    const Player* player_ = nullptr;
+    const Car* car_ = nullptr;
+    const Boat* boat_ = nullptr;
 };
 
 }  // namespace sim

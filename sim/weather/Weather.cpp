@@ -45,10 +45,9 @@ Weather::Weather(float rain_intensity) {
     road_wetness_ = settled_wetness(rain_intensity);
 }
 
-void Weather::step(StepContext& ctx) {
-    const Player* player = ctx.world.find<Player>();
-    advance(player ? player->rain_intensity() : 0.0f, ctx.dt);
-}
+void Weather::connect(const SubsystemLinks& links) { player_ = links.may<Player>(); }
+
+void Weather::step(StepContext& ctx) { advance(player_ ? player_->rain_intensity() : 0.0f, ctx.dt); }
 
 void Weather::advance(float rain_intensity, float dt) {
     if (!std::isfinite(rain_intensity) || !(dt > 0.0f))

@@ -10,6 +10,8 @@
 
 namespace sim {
 
+class Player;
+
 class Weather final : public Subsystem {
 public:
     // Seconds for a lag to close (1 - 1/e of) a gap: first-order, stepped per tick.
@@ -30,7 +32,9 @@ public:
     // and wet). Throws std::invalid_argument unless it is finite and within 0..1.
     explicit Weather(float rain_intensity);
 
-    std::string_view name() const override { return "weather"; }
+    static constexpr std::string_view kName = "weather";
+    std::string_view name() const override { return kName; }
+    void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
     uint64_t hash() const override;
 
@@ -52,6 +56,9 @@ private:
     float rain_rate_ = 0.0f;
     float cloud_cover_ = 0.0f;
     float road_wetness_ = 0.0f;
+
+    // Connected at assembly (connect); nullptr where the world has none.
+    const Player* player_ = nullptr;
 };
 
 }  // namespace sim

@@ -1,6 +1,6 @@
 #pragma once
 // The sea as floating bodies see it. The flat sea is the default; a wave simulation
-// installs itself with World::set_sea() so boats and objects ride its waves.
+// is the world's sea (Subsystem::sea_surface) so boats and objects ride its waves.
 #include <glm/vec2.hpp>
 
 namespace sim {

@@ -6,10 +6,12 @@
 
 #include "sim/core/JobPool.h"
 #include "sim/core/TickInput.h"
+#include "sim/world/SubsystemLinks.h"
 
 namespace sim {
 
 class World;
+class SeaSurface;
 
 struct StepContext {
     TickInput input;     // held this tick
@@ -27,8 +29,14 @@ class Subsystem {
 public:
     virtual ~Subsystem() = default;
     virtual std::string_view name() const = 0;
+    // Called once when the world is assembled: keep what the subsystem reads of the
+    // others (only what its entry in the subsystem list declares).
+    virtual void connect(const SubsystemLinks& links) { (void)links; }
     virtual void step(StepContext& ctx) = 0;
     virtual uint64_t hash() const = 0;
+    // A subsystem that simulates the sea surface returns it: the world installs it
+    // for boats and objects to ride.
+    virtual const SeaSurface* sea_surface() const { return nullptr; }
 };
 
 }  // namespace sim

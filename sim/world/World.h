@@ -1,10 +1,11 @@
 #pragma once
 // The deterministic world: a level, its subsystems in a fixed order, a tick counter.
-// step() applies one quantised TickInput; hash() names every subsystem's state.
+// It is assembled from a list of subsystem entries (sim/world/SubsystemEntry.h), each
+// connected once to what it reads. step() applies one quantised TickInput; hash()
+// names every subsystem's state.
 #include <memory>
 #include <stdexcept>
 #include <string>
-#include <typeinfo>
 #include <vector>
 
 #include "sim/core/JobPool.h"
@@ -12,6 +13,7 @@
 #include "sim/world/LevelDesc.h"
 #include "sim/world/SeaSurface.h"
 #include "sim/world/Subsystem.h"
+#include "sim/world/SubsystemEntry.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/WorldEvents.h"
 #include "sim/world/WorldHash.h"
@@ -36,7 +38,11 @@ struct WorldOptions {
 
 class World {
 public:
+    // The game's world: every subsystem of the standard list the level has.
     explicit World(LevelDesc level, WorldOptions options = {});
+    // A world of just the listed subsystems, stepped in the list's order. Throws
+    // std::invalid_argument naming both when one reads a subsystem the world lacks.
+    World(LevelDesc level, const std::vector<SubsystemEntry>& list, WorldOptions options = {});
     World(const World&) = delete;
     World& operator=(const World&) = delete;
 
@@ -50,37 +56,27 @@ public:
 
     const LevelDesc& level() const { return level_; }
     const Terrain& terrain() const { return terrain_; }
+    // A wave simulation in the world (Subsystem::sea_surface), else the flat sea.
     const SeaSurface& sea() const { return *sea_; }
-    // A wave simulation installs itself here; nullptr restores the flat sea.
-    void set_sea(const SeaSurface* sea) { sea_ = sea ? sea : &flat_sea_; }
     WorldEvents& events() { return events_; }
     const WorldEvents& events() const { return events_; }
     TickInput last_input() const { return previous_; }
     JobPool& jobs() { return jobs_; }
 
-    void add(std::unique_ptr<Subsystem> subsystem);
     const std::vector<std::unique_ptr<Subsystem>>& subsystems() const { return subsystems_; }
 
-    template <class T> const T* find() const {
-        for (const auto& s : subsystems_)
-            if (auto* t = dynamic_cast<const T*>(s.get())) return t;
-        return nullptr;
-    }
-    template <class T> T* find() {
-        for (auto& s : subsystems_)
-            if (auto* t = dynamic_cast<T*>(s.get())) return t;
-        return nullptr;
-    }
-    template <class T> const T& get() const {
-        if (const T* t = find<T>()) return *t;
-        throw std::logic_error(std::string("world has no subsystem of type ") + typeid(T).name());
-    }
-    template <class T> T& get() {
-        if (T* t = find<T>()) return *t;
-        throw std::logic_error(std::string("world has no subsystem of type ") + typeid(T).name());
-    }
+    // For the game, the renderer and tests; subsystems themselves read each other
+    // through the links they are given at assembly.
+    template <class T> const T* find() const { return static_cast<const T*>(named(T::kName)); }
+    template <class T> T* find() { return static_cast<T*>(named(T::kName)); }
+    template <class T> const T& get() const { return *static_cast<const T*>(need(T::kName)); }
+    template <class T> T& get() { return *static_cast<T*>(need(T::kName)); }
 
 private:
+    void assemble(const std::vector<SubsystemEntry>& list);
+    Subsystem* named(std::string_view name) const;
+    Subsystem* need(std::string_view name) const;  // throws std::logic_error
+
     LevelDesc level_;
     Terrain terrain_;
     FlatSea flat_sea_;
@@ -91,9 +87,5 @@ private:
     uint64_t tick_ = 0;
     TickInput previous_;
 };
-
-// Adds the game's subsystems in their stepping order (sim/world/SubsystemList.cpp):
-// the one list an effect's sim part is added to.
-void add_standard_subsystems(World& world);
 
 }  // namespace sim
