@@ -55,8 +55,7 @@ void EnergyPass::register_params(ParamRegistry& params) {
 }
 
 void EnergyPass::render(const FrameContext& frame) {
-    gather_energy_view(frame.world, view_);
-    draw(frame, view_.segments);
+    draw(frame, frame.data.energy.segments);
 }
 
 void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {

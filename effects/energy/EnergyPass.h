@@ -64,7 +64,6 @@ private:
     gl::Framebuffer fbo_;
     GLuint colour_id_ = 0;  // the scene colour fbo_ holds
     EnergyTileGrid tiles_;
-    EnergyView view_;  // reused each frame
     EnergyLook look_;
     EnergyMethod method_;
 };

@@ -235,7 +235,8 @@ void bench_full_screen(BenchReport& report, bool quick) {
     v.eye = {0.2f, 0.1f, 0.0f};
     v.target = {0.0f, 0.0f, -10.0f};
     const effects::Camera cam = effects::make_camera(v, float(W) / float(H));
-    const effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0, effects::capture_poses(world)};
+    const effects::FrameData data;  // the bench draws its own segments
+    const effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0, effects::capture_poses(world), data};
     std::vector<EnergySegment> shot;
     glm::vec3 p(0.0f, 0.0f, 3.0f);
     for (int i = 0; i < 4; ++i) {

@@ -56,7 +56,7 @@ struct FluidStage {
         const float sky[4] = {0.35f, 0.45f, 0.55f, 1.0f}, far = 1.0f;
         glClearNamedFramebufferfv(scene.targets.scene().id(), GL_COLOR, 0, sky);
         glClearNamedFramebufferfv(scene.targets.scene().id(), GL_DEPTH, 0, &far);
-        effects::FrameContext frame{world, camera, scene, {0, width, height}, 0.0, effects::capture_poses(world)};
+        effects::FrameContext frame{world, camera, scene, {0, width, height}, 0.0, effects::capture_poses(world), data};
         pass.draw(frame, view);
     }
 
@@ -78,6 +78,7 @@ struct FluidStage {
     sim::World world;
     effects::SceneDesc desc;
     effects::SceneResources scene;
+    effects::FrameData data;  // nothing: the fluid reads its own view
     effects::Camera camera;
     effects::FluidPass pass;
 };
