@@ -14,6 +14,7 @@
 #include "effects/dust/FibreTexture.h"
 #include "effects/dust/FibreVolume.h"
 #include "effects/dust/SkyExposure.h"
+#include "effects/gl/PipelineState.h"
 #include "effects/gl/Program.h"
 #include "game/bench/BenchSupport.h"
 #include "game/level/LevelLoader.h"
@@ -126,11 +127,7 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
     auto draw_props = [&] {
         glBindFramebuffer(GL_FRAMEBUFFER, scene.targets.scene().id());
         glViewport(0, 0, width, height);
-        glEnable(GL_DEPTH_TEST);
-        glDepthMask(GL_TRUE);
-        glDepthFunc(GL_LESS);
-        glDisable(GL_BLEND);
-        glEnable(GL_CULL_FACE);
+        effects::gl::PipelineScope state({.depth_test = true, .depth_write = true, .cull_back_faces = true});
         mesh.use();
         scene.lighting.apply(mesh);
         mesh.set("u_view_proj", camera.view_proj);
@@ -143,7 +140,6 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
             mesh.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(m))));
             models[k]->draw(mesh, false);
         }
-        glDisable(GL_CULL_FACE);
     };
     auto clear = [&] {
         glBindFramebuffer(GL_FRAMEBUFFER, scene.targets.scene().id());
