@@ -392,7 +392,6 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
         draw_splash(frame, view);
     }
     if (profiling_) times_.splash_ms = lap(clock);
-
 }
 
 }  // namespace effects
