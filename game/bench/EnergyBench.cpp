@@ -14,6 +14,7 @@
 #include "effects/energy/EnergyProbe.h"
 #include "effects/gl/EmptyVertexArray.h"
 #include "effects/gl/Framebuffer.h"
+#include "effects/gl/PipelineState.h"
 #include "effects/gl/Program.h"
 #include "effects/scene/FrameContext.h"
 #include "game/bench/BenchSupport.h"
@@ -277,9 +278,7 @@ void bench_full_screen(BenchReport& report, bool quick) {
     target.check_complete();
     target.bind();
     glViewport(0, 0, W, H);
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    effects::gl::apply({.blend = effects::gl::kAdd});
     fill.use();
     effects::gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -288,7 +287,7 @@ void bench_full_screen(BenchReport& report, bool quick) {
     for (int f = 0; f < frames; ++f) glDrawArrays(GL_TRIANGLES, 0, 3);
     glFinish();
     const double fill_ms = seconds_since(start) * 1e3 / frames;
-    glDisable(GL_BLEND);
+    effects::gl::apply(effects::gl::kInitialState);
     report.add({"energy", "full-screen energy glow @1280x720", glow_ms, "ms", std::nullopt, false,
                 std::to_string(tiles) + " tiles, " + fmt("%.1f", double(pairs) / double(std::max<size_t>(tiles, 1))) +
                     " segments a tile, no bloom"});
