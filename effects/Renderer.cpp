@@ -46,8 +46,10 @@ void Renderer::render(const sim::World& world, RenderOutput output, const FrameP
     resources_.lighting.sky.sun_dir = sun_dir_;
     resources_.lighting.set_weather(weather_look(world));
 
+    gather_frame_data(world, data_);
+
     Camera camera = make_camera(poses.camera, float(output.width) / float(output.height));
-    FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds, poses};
+    FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds, poses, data_};
     timer_->frame_begin();
     for (auto& pass : passes_) {
         gl::DebugGroup group(pass->name());

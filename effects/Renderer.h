@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "effects/Quality.h"
+#include "effects/PassList.h"
 #include "effects/gl/PassTimer.h"
 #include "effects/scene/Pass.h"
 
@@ -46,6 +47,7 @@ public:
 
 private:
     SceneResources resources_;
+    FrameData data_;  // gathered once a frame, before the passes
     std::vector<std::unique_ptr<Pass>> passes_;
     std::unique_ptr<gl::PassTimer> timer_;
     ParamRegistry params_;
@@ -53,8 +55,5 @@ private:
     Quality quality_ = Quality::High;
     float render_scale_ = 1.0f;
 };
-
-// The passes in frame order (effects/PassList.cpp).
-std::vector<std::unique_ptr<Pass>> make_pass_list();
 
 }  // namespace effects

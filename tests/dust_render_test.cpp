@@ -19,6 +19,7 @@
 
 #include "HeadlessTest.h"
 #include "RenderStage.h"
+#include "effects/dust/DustPass.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
 #include "sim/dust/DustField.h"
@@ -28,7 +29,7 @@ namespace {
 constexpr int kWidth = 320, kHeight = 200;
 
 // The harbour's lit scene, its dust shells and the tonemap, from a camera of the test's choosing.
-constexpr StagePasses kDustFrame = kLitScene | kDustPass | kTonemapPass;
+const StagePasses kDustFrame = kLitScene | kDustPass | kTonemapPass;
 const StageFrame kWithoutDust{.skip = kDustPass};
 
 RenderStage dust_stage(const std::string& level = "harbour", int w = kWidth, int h = kHeight,

@@ -19,6 +19,7 @@
 
 #include "HeadlessTest.h"
 #include "RenderStage.h"
+#include "effects/energy/EnergyLightPass.h"
 #include "SimTestLevel.h"
 #include "effects/energy/EnergyPass.h"
 #include "effects/energy/EnergyProbe.h"
@@ -455,7 +456,7 @@ TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
 TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
     constexpr int W = 160, H = 96;
     // The scene's targets only: the test clears them and draws the pass itself.
-    RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = 0, .shadow_map_size = 512});
+    RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = {}, .shadow_map_size = 512});
     const GLuint scene = stage.scene().targets.scene().id();
     const effects::Camera cam = look({0, 20, 0}, {0, 20, -1}, W, H);  // level, at the sky
     const std::vector<EnergySegment> beam = {segment({-3, 20, -15}, {1, 0, 0}, 6.0f, 0.12f, 1.1f)};

@@ -49,7 +49,7 @@ sim::CameraView tank_view() {
 }
 
 // The lit scene, the water, the tank and the tonemap.
-constexpr StagePasses kTankFrame = kLitScene | kSceneCopyPass | kWaterPass | kFluidPass | kTonemapPass;
+const StagePasses kTankFrame = kLitScene | kSceneCopyPass | kWaterPass | kFluidPass | kTonemapPass;
 
 void maybe_write_png(const std::string& name, const game::ImageRGBA8& img) {
     if (const char* dir = std::getenv("SPINDRIFT_FLUID_PNG_DIR"))

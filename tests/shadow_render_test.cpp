@@ -14,6 +14,7 @@
 
 #include "HeadlessTest.h"
 #include "RenderStage.h"
+#include "effects/scene/ShadowPass.h"
 #include "SimTestLevel.h"
 #include "game/capture/ImageFiles.h"
 #include "game/capture/Readback.h"

@@ -25,7 +25,7 @@
 namespace {
 
 constexpr int kWidth = 320, kHeight = 240;
-constexpr StagePasses kWaterFrame = kLitScene | kSceneCopyPass | kWaterPass | kTonemapPass;
+const StagePasses kWaterFrame = kLitScene | kSceneCopyPass | kWaterPass | kTonemapPass;
 const glm::vec3 kDropPoint{10.0f, 1.2f, 12.0f};  // over open water, 12 m off the test level's shore
 
 // The test level with a wave grid as the sea.

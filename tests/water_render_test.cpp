@@ -36,7 +36,7 @@ namespace {
 constexpr int kWidth = 320, kHeight = 200;
 
 // The lit scene, the water and the tonemap.
-constexpr StagePasses kWaterFrame = kLitScene | kSceneCopyPass | kWaterPass | kTonemapPass;
+const StagePasses kWaterFrame = kLitScene | kSceneCopyPass | kWaterPass | kTonemapPass;
 
 // Looking south over the quay at the harbour water.
 sim::CameraView harbour_view() {

@@ -8,6 +8,7 @@
 
 #include "HeadlessTest.h"
 #include "RenderStage.h"
+#include "effects/rain/RainStreakPass.h"
 #include "effects/scene/WeatherLook.h"
 #include "sim/player/CameraRig.h"
 #include "sim/weather/Weather.h"
@@ -15,7 +16,7 @@
 namespace {
 
 constexpr int kWidth = 320, kHeight = 180;
-constexpr StagePasses kWeatherFrame = kLitScene | kRainStreakPass | kTonemapPass;
+const StagePasses kWeatherFrame = kLitScene | kRainStreakPass | kTonemapPass;
 
 // Mean luma and saturation ((max - min) / max) of the sky's or the ground's pixels.
 struct Region {

@@ -1,5 +1,7 @@
 #include "effects/dust/DustPass.h"
 
+#include "effects/gl/PipelineState.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -70,14 +72,12 @@ void DustPass::render(const FrameContext& frame) {
     const Camera& cam = frame.camera;
     glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
     glViewport(0, 0, t.width(), t.height());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    // Shells hug the surface where the dust is thin: keep them in front of it.
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-1.0f, -2.0f);
+    // Shells hug the surface where the dust is thin: an offset keeps them in front of it.
+    gl::PipelineScope state({.depth_test = true,
+                             .depth_write = true,
+                             .depth_func = GL_LEQUAL,
+                             .offset_factor = -1.0f,
+                             .offset_units = -2.0f});
 
     // The props in view, lit once per vertex of the level they are drawn at.
     const auto& props = field->surface().props();
@@ -144,8 +144,6 @@ void DustPass::render(const FrameContext& frame) {
                            reinterpret_cast<const void*>(r.first_fin_index * sizeof(uint32_t)));
         }
     }
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDepthFunc(GL_LESS);
 }
 
 }  // namespace effects

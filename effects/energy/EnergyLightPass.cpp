@@ -15,8 +15,7 @@ std::vector<LineLight> EnergyLightPass::lights(const EnergyView& view) const {
 }
 
 void EnergyLightPass::render(const FrameContext& frame) {
-    gather_energy_view(frame.world, view_);
-    frame.scene.lighting.set_line_lights(lights(view_));
+    frame.scene.lighting.set_line_lights(lights(frame.data.energy));
 }
 
 }  // namespace effects

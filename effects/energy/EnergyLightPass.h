@@ -17,7 +17,6 @@ public:
     std::vector<LineLight> lights(const EnergyView& view) const;
 
 private:
-    EnergyView view_;  // reused each frame
     float intensity_per_strength_ = 60.0f;  // line-light intensity per unit of segment strength
     float reach_m_ = 9.0f;
 };

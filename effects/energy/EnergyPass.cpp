@@ -10,6 +10,7 @@
 #include <glm/vec4.hpp>
 
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 
 namespace effects {
 
@@ -55,8 +56,7 @@ void EnergyPass::register_params(ParamRegistry& params) {
 }
 
 void EnergyPass::render(const FrameContext& frame) {
-    gather_energy_view(frame.world, view_);
-    draw(frame, view_.segments);
+    draw(frame, frame.data.energy.segments);
 }
 
 void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {
@@ -71,10 +71,9 @@ void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegm
     }
     fbo_.bind();
     glViewport(0, 0, t.width(), t.height());
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    gl::PipelineScope state({.blend = gl::kAdd});
     draw_field(frame.camera, t.depth(), t.width(), t.height(), segments, false);
-    glDisable(GL_BLEND);
+    gl::apply(gl::kFullScreen);
     if (look_.bloom > 0.0f && frame.scene.quality.bloom) bloom(frame, segments);
 }
 
@@ -112,7 +111,7 @@ void EnergyPass::bloom(const FrameContext& frame, std::span<const sim::EnergySeg
     constexpr int kReach = 8;  // two 4-texel blurs
     lo = glm::max(lo - kReach, glm::ivec2(0));
     hi = glm::min(hi + kReach, glm::ivec2(w, h));
-    glEnable(GL_SCISSOR_TEST);
+    gl::apply({.scissor = true});
     glScissor(lo.x, lo.y, hi.x - lo.x, hi.y - lo.y);
     gl::bind_empty_vertex_array();
     blur_.use();
@@ -130,15 +129,12 @@ void EnergyPass::bloom(const FrameContext& frame, std::span<const sim::EnergySeg
     glViewport(0, 0, t.width(), t.height());
     const int sx = t.width() / w, sy = t.height() / h;  // rounded down: the scissor gets a texel of slack
     glScissor(lo.x * sx, lo.y * sy, (hi.x - lo.x) * sx + sx, (hi.y - lo.y) * sy + sy);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    gl::apply({.blend = gl::kAdd, .scissor = true});
     add_.use();
     add_.set("u_bloom", 0);
     add_.set("u_strength", look_.bloom);
     bloom_a_.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_BLEND);
-    glDisable(GL_SCISSOR_TEST);
 }
 
 void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int width, int height,
@@ -154,9 +150,6 @@ void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int 
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tile_list_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileSegmentBinding, tile_segments_.id());
 
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
     program_.use();
     program_.set("u_viewport", glm::vec2(float(width), float(height)));
     program_.set("u_tile_px", float(EnergyTileGrid::kTilePx));
@@ -180,7 +173,6 @@ void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int 
     depth.bind(kDepthUnit);
     gl::bind_empty_vertex_array();
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(tiles_.tiles.size()));
-    glDepthMask(GL_TRUE);
 }
 
 }  // namespace effects

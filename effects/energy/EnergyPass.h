@@ -44,8 +44,8 @@ public:
 
     // Adds the glow of these segments to the scene colour, occluded by the scene depth.
     void draw(const FrameContext& frame, std::span<const sim::EnergySegment> segments);
-    // Draws into the bound framebuffer (viewport 0,0,width,height, blending as the
-    // caller set it): the glow, or with `raw` H in red and the ray's end distance in
+    // Draws into the bound framebuffer (viewport 0,0,width,height, under the caller's
+    // gl::PipelineState: no depth test, blended or not): the glow, or with `raw` H in red and the ray's end distance in
     // green, for float targets. `depth` is the scene depth the rays stop at.
     void draw_field(const Camera& camera, const gl::Texture& depth, int width, int height,
                     std::span<const sim::EnergySegment> segments, bool raw);
@@ -64,7 +64,6 @@ private:
     gl::Framebuffer fbo_;
     GLuint colour_id_ = 0;  // the scene colour fbo_ holds
     EnergyTileGrid tiles_;
-    EnergyView view_;  // reused each frame
     EnergyLook look_;
     EnergyMethod method_;
 };

@@ -1,5 +1,7 @@
 #include "effects/energy/EnergyProbe.h"
 
+#include "effects/gl/PipelineState.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -30,7 +32,7 @@ void EnergyProbe::draw_energy(EnergyPass& pass, const Camera& camera, std::span<
     glViewport(0, 0, width_, height_);
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
-    glDisable(GL_BLEND);
+    gl::PipelineScope state(gl::kFullScreen);
     pass.draw_field(camera, depth_, width_, height_, segments, true);
 }
 
@@ -41,10 +43,8 @@ void EnergyProbe::draw_glow(EnergyPass& pass, const Camera& camera, std::span<co
     colour_.upload(GL_RGBA, GL_FLOAT, background);
     fbo_.bind();
     glViewport(0, 0, width_, height_);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    gl::PipelineScope state({.blend = gl::kAdd});
     pass.draw_field(camera, depth_, width_, height_, segments, false);
-    glDisable(GL_BLEND);
 }
 
 std::vector<glm::vec4> EnergyProbe::read() const {

@@ -8,6 +8,7 @@
 
 #include "effects/gl/DebugGroup.h"
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 #include "effects/scene/Frustum.h"
 #include "effects/scene/ScreenRect.h"
 #include "sim/fluid/FluidTank.h"
@@ -248,11 +249,8 @@ void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
     splash_thickness_.set("u_scene_depth", int(kSceneDepthUnit));
     smoothed_front_->bind(kMapUnit);
     splash_thickness_.set("u_body_front", int(kMapUnit));
-    glEnable(GL_PROGRAM_POINT_SIZE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    gl::apply({.blend = gl::kAdd, .scissor = true, .program_point_size = true});
     glDrawArrays(GL_POINTS, 0, GLsizei(view.splash.size()));
-    glDisable(GL_PROGRAM_POINT_SIZE);
 
     // The layer over the refracted liquid, premultiplied; the scene's alpha stays.
     shade_fbo_.bind();
@@ -268,9 +266,9 @@ void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
     p.set("u_opacity_per_m", look_.splash_opacity_per_m);
     thickness_.bind(kMapUnit);
     p.set("u_thickness", int(kMapUnit));
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    gl::apply({.blend = gl::kPremultipliedOver, .scissor = true});
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_BLEND);
+    gl::apply({.scissor = true});
 }
 
 void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
@@ -295,17 +293,14 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
     glCopyImageSubData(t.colour().id(), GL_TEXTURE_2D, 0, bg.x, bg.y, 0, background_.id(), GL_TEXTURE_2D, 0, bg.x, bg.y,
                        0, bg.z - bg.x, bg.w - bg.y, 1);
 
-    glEnable(GL_SCISSOR_TEST);
+    gl::PipelineScope state({.scissor = true});
     glScissor(rect_.x, rect_.y, rect_.z - rect_.x, rect_.w - rect_.y);
     glViewport(0, 0, width_, height_);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
     gl::bind_empty_vertex_array();
 
     {
         gl::DebugGroup group("fluid.depth_maps");
-        glEnable(GL_PROGRAM_POINT_SIZE);
+        gl::apply({.scissor = true, .program_point_size = true});
         ellipsoids_.use();
         set_ivec4(ellipsoids_, "u_rect", rect_);
         ellipsoids_.set("u_proj", cam.proj);
@@ -327,10 +322,8 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
             glBlendEquationi(0, GL_MIN);
             glBlendEquationi(1, GL_MAX);
             glDrawArrays(GL_POINTS, 0, GLsizei(view.body.size()));
-            for (GLuint i = 0; i < 2; ++i) glDisablei(GL_BLEND, i);
         }
-        glDisable(GL_PROGRAM_POINT_SIZE);
-        glBlendEquation(GL_FUNC_ADD);
+        gl::apply({.scissor = true});  // the per-buffer blending off again
     }
     if (profiling_) times_.depth_ms = lap(clock);
 
@@ -399,10 +392,6 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
         draw_splash(frame, view);
     }
     if (profiling_) times_.splash_ms = lap(clock);
-
-    glDisable(GL_SCISSOR_TEST);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_DEPTH_TEST);
 }
 
 }  // namespace effects

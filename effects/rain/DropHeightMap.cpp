@@ -1,5 +1,7 @@
 #include "effects/rain/DropHeightMap.h"
 
+#include "effects/gl/PipelineState.h"
+
 #include <vector>
 
 namespace effects {
@@ -55,9 +57,7 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         vao_.vertex_buffer(0, instances_, 0, sizeof(RainMetaball));
     wet_.set(drops_by_tile(metaballs, glass_size_m, width_, height_, radius_scale, c.threshold), width_, height_);
 
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDepthMask(GL_FALSE);
+    gl::PipelineScope state(gl::kFullScreen);
     glViewport(0, 0, width_, height_);
 
     // 1. Splat: additive sums, where water can be only: the wet tiles are marked in the
@@ -67,18 +67,10 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     glClearBufferfv(GL_COLOR, 0, zero);
     if (!metaballs.empty()) {
         glClearBufferfv(GL_DEPTH, 0, &unmarked);
-        glEnable(GL_DEPTH_TEST);
-        glDepthMask(GL_TRUE);
-        glDepthFunc(GL_ALWAYS);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        gl::apply({.depth_test = true, .depth_write = true, .depth_func = GL_ALWAYS, .colour_write = false});
         mark_.use();
         wet_.cover(mark_);  // at depth 0.5, as the splats
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glDepthMask(GL_FALSE);
-        glDepthFunc(GL_LEQUAL);
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFunc(GL_ONE, GL_ONE);
+        gl::apply({.depth_test = true, .depth_func = GL_LEQUAL, .blend = gl::kAdd});
         splat_.use();
         splat_.set("u_glass_size_m", glass_size_m);
         splat_.set("u_radius_scale", radius_scale);
@@ -87,9 +79,7 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         profile_.bind(0);
         vao_.bind();
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(metaballs.size()));
-        glDisable(GL_BLEND);
-        glDisable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        gl::apply(gl::kFullScreen);
     }
 
     // 2. Threshold and height (compressed if asked) per texel where water can be.
@@ -111,7 +101,6 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     normals_.set("u_texel_mm", glm::vec2(glass_size_m.x * 1000.0f / float(width_), glass_size_m.y * 1000.0f / float(height_)));
     heights_.bind(0);
     wet_.draw(normals_);
-    glDepthMask(GL_TRUE);
 }
 
 }  // namespace effects

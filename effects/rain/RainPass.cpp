@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "effects/gl/PipelineState.h"
 #include "sim/rain/GlassSurface.h"
 
 namespace effects {
@@ -77,15 +78,14 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     // Tested, not written, against the scene's depth: the roof lining and the pillars
     // between the driver and the glass hide it; the offset keeps the glass's own depth
     // (where the scene drew it) from fighting with the drops.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(-1.0f, -4.0f);
-    glDisable(GL_CULL_FACE);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
     // Alpha composited too: the scene's is 1 and stays 1, a cleared 0 keeps the coverage.
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    constexpr gl::BlendState kOverWithCoverage{true, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE,
+                                               GL_ONE_MINUS_SRC_ALPHA};
+    gl::PipelineScope state({.depth_test = true,
+                             .depth_func = GL_LEQUAL,
+                             .blend = kOverWithCoverage,
+                             .offset_factor = -1.0f,
+                             .offset_units = -4.0f});
 
     shade_.use();
     frame.scene.lighting.apply_sky(shade_);
@@ -121,10 +121,6 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     behind_.bind(1);
     film_.bind(2);
     mesh_->draw();
-    glDisable(GL_BLEND);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
 }
 
 void RainPass::upload_film(const RainView& view) {

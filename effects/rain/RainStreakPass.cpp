@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 
 namespace effects {
 namespace {
@@ -43,11 +44,7 @@ void RainStreakPass::render(const FrameContext& frame) {
     }
     fbo_.bind();
     glViewport(0, 0, t.width(), t.height());
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gl::PipelineScope state({.depth_test = true, .blend = gl::kAlphaOver});
     program_.use();
     program_.set("u_view_proj", frame.camera.view_proj);
     program_.set("u_eye", frame.camera.eye);
@@ -61,8 +58,6 @@ void RainStreakPass::render(const FrameContext& frame) {
     program_.set("u_colour", kStreakColour * weather.sky_intensity);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_LINES, 0, 2 * drawn_);
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
 }
 
 }  // namespace effects

@@ -1,5 +1,6 @@
 #include "effects/rain/ReferenceHeightMap.h"
 
+#include "effects/gl/PipelineState.h"
 #include "effects/rain/DropTiles.h"
 #include "effects/rain/MetaballReference.h"
 
@@ -34,10 +35,7 @@ void ReferenceHeightMap::update(std::span<const RainMetaball> drops, glm::vec2 g
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tiles_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, tile_drops_.id());
 
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glDepthMask(GL_FALSE);
+    gl::PipelineScope state(gl::kFullScreen);
     glViewport(0, 0, width_, height_);
 
     // 1. Iso-surface height per texel where water can be, as the 2D path does.
@@ -60,7 +58,6 @@ void ReferenceHeightMap::update(std::span<const RainMetaball> drops, glm::vec2 g
     normals_.set("u_texel_mm", texel_m * 1000.0f);
     heights_.bind(0);
     wet_.draw(normals_);
-    glDepthMask(GL_TRUE);
 }
 
 }  // namespace effects

@@ -1,5 +1,7 @@
 #include "effects/scene/EnvironmentPass.h"
 
+#include "effects/gl/PipelineState.h"
+
 namespace effects {
 
 EnvironmentPass::EnvironmentPass()
@@ -15,8 +17,7 @@ void EnvironmentPass::render(const FrameContext& frame) {
     const glm::vec3 up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
     program_.use();
     lighting.apply_sky(program_);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    gl::PipelineScope state(gl::kFullScreen);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     int size = lighting.env_cube.width();
     glViewport(0, 0, size, size);

@@ -1,6 +1,7 @@
 #pragma once
 #include "effects/Quality.h"
 #include "effects/scene/Camera.h"
+#include "effects/scene/FrameData.h"
 #include "effects/scene/FramePoses.h"
 #include "effects/scene/SceneGeometry.h"
 #include "effects/scene/SceneLighting.h"
@@ -32,6 +33,7 @@ struct FrameContext {
     RenderOutput output;
     double time_s = 0.0;  // sim time: frames of a replay are the same every run
     FramePoses poses;     // where the moving things are drawn (the camera is made from its view)
+    const FrameData& data;  // gathered from the world once for the frame
 };
 
 }  // namespace effects

@@ -1,6 +1,7 @@
 #include "effects/scene/FxaaPass.h"
 
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 
 namespace effects {
 
@@ -21,8 +22,7 @@ void FxaaPass::render(const FrameContext& frame) {
     else
         t.antialiased_fbo().bind();
     glViewport(0, 0, t.width(), t.height());
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    gl::PipelineScope state(gl::kFullScreen);
     program_.use();
     program_.set("u_display", 0);
     program_.set("u_subpixel", subpixel_);

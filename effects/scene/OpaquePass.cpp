@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 
 namespace effects {
 
@@ -15,17 +16,12 @@ void OpaquePass::render(const FrameContext& frame) {
     SceneTargets& t = frame.scene.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
     glViewport(0, 0, t.width(), t.height());
-    glDisable(GL_BLEND);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
+    gl::PipelineScope state({.depth_test = true, .depth_write = true, .cull_back_faces = true});
     const float clear_colour[4] = {0, 0, 0, 1}, clear_normal[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, clear_colour);
     glClearBufferfv(GL_COLOR, 1, clear_normal);
     glClear(GL_DEPTH_BUFFER_BIT);
 
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
     const bool line_lights = frame.scene.lighting.has_line_lights();
     const gl::Program& objects = objects_.get(frame.scene.quality, line_lights);
     if (!ground_)
@@ -42,18 +38,14 @@ void OpaquePass::render(const FrameContext& frame) {
     ground.set("u_wetness", frame.scene.lighting.weather.road_wetness);
     frame.scene.geometry.draw(objects, ground, frame.poses, SceneGeometry::Use::Shading,
                               Frustum(frame.camera.view_proj));
-    glDisable(GL_CULL_FACE);
 
     // Sky last, only where nothing was drawn: the far plane passes GL_LEQUAL.
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
+    gl::apply({.depth_test = true, .depth_func = GL_LEQUAL});
     sky_.use();
     frame.scene.lighting.apply_sky(sky_);
     sky_.set("u_inv_view_proj", frame.camera.inv_view_proj);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
 }
 
 }  // namespace effects

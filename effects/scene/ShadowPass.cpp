@@ -1,5 +1,7 @@
 #include "effects/scene/ShadowPass.h"
 
+#include "effects/gl/PipelineState.h"
+
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -56,15 +58,12 @@ void ShadowPass::render(const FrameContext& frame) {
         fbo_initialised_ = true;
     }
     glViewport(0, 0, size, size);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_BLEND);
     // No polygon offset: its slope term grows without bound on faces edge-on to the sun
     // (the car's sides and windows), pushing them behind the road they shade, which drew
     // the car's shadow as streaks; GL 4.5 has no clamp for it. The receiver biases
     // instead, along its normal (sun_visibility in shaders/common/lighting.glsl).
-    glDisable(GL_CULL_FACE);  // thin walls and open meshes must cast shadows too
+    // Nothing culled: thin walls and open meshes must cast shadows too.
+    gl::PipelineScope state({.depth_test = true, .depth_write = true});
     program_.set("u_view_proj", lighting.shadow_view_proj);
     const Frustum sun_view(lighting.shadow_view_proj);
     // What stays put (props, relief) is drawn once per view of the sun; each frame starts

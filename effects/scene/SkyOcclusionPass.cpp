@@ -1,5 +1,7 @@
 #include "effects/scene/SkyOcclusionPass.h"
 
+#include "effects/gl/PipelineState.h"
+
 #include <algorithm>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -32,11 +34,8 @@ void SkyOcclusionPass::render(const FrameContext& frame) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     const int size = lighting.sky_map.width();
     glViewport(0, 0, size, size);
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);  // roofs are seen from above and below alike
+    // Nothing culled: roofs are seen from above and below alike.
+    gl::PipelineScope state({.depth_test = true, .depth_write = true});
     glClear(GL_DEPTH_BUFFER_BIT);
     program_.use();
     program_.set("u_view_proj", lighting.sky_view_proj);

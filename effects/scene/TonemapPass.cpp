@@ -1,6 +1,7 @@
 #include "effects/scene/TonemapPass.h"
 
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 
 namespace effects {
 
@@ -20,8 +21,7 @@ void TonemapPass::render(const FrameContext& frame) {
         t.display_fbo().bind();
         glViewport(0, 0, t.width(), t.height());
     }
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    gl::PipelineScope state(gl::kFullScreen);
     program_.use();
     program_.set("u_exposure", exposure_);
     program_.set("u_hdr", 0);

@@ -1,6 +1,7 @@
 #include "effects/scene/UpscalePass.h"
 
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 
 namespace effects {
 
@@ -17,8 +18,7 @@ void UpscalePass::render(const FrameContext& frame) {
     if (t.width() == frame.output.width && t.height() == frame.output.height) return;
     glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
     glViewport(0, 0, frame.output.width, frame.output.height);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    gl::PipelineScope state(gl::kFullScreen);
     program_.use();
     program_.set("u_display", 0);
     program_.set("u_edge", edge_);

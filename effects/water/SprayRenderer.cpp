@@ -1,5 +1,7 @@
 #include "effects/water/SprayRenderer.h"
 
+#include "effects/gl/PipelineState.h"
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -49,14 +51,11 @@ void SprayRenderer::draw(const FrameContext& frame, std::span<const SprayDrop> d
     program_.set("u_opacity", look.opacity);
 
     // Premultiplied "over": drops are all nearly the same colour, so order hardly
-    // shows and no sort is needed. The scene's alpha stays as it is.
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-    glDepthMask(GL_FALSE);
+    // shows and no sort is needed. The scene's alpha stays as it is. Depth-tested, not
+    // written.
+    gl::apply({.depth_test = true, .blend = gl::kPremultipliedOver});
     vao_.bind();
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(drops.size()));
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
 }
 
 }  // namespace effects

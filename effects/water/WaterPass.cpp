@@ -1,5 +1,7 @@
 #include "effects/water/WaterPass.h"
 
+#include "effects/gl/PipelineState.h"
+
 namespace effects {
 
 WaterPass::WaterPass() = default;
@@ -33,11 +35,7 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     // Geometry: depth, normals and the water kind, with a cheap shader. Sheets first:
     // they stand above the surface, whose pixels behind them then fail the depth test.
     shading_.begin_geometry(t);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    gl::PipelineScope state({.depth_test = true, .depth_write = true});
     const bool sheets = sheets_.update(view, look_.sheet_tear_stretch);
     if (sheets) {
         const gl::Program& p = sheets_.program();

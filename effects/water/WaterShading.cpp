@@ -1,6 +1,7 @@
 #include "effects/water/WaterShading.h"
 
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 
 namespace effects {
 
@@ -55,19 +56,15 @@ void WaterShading::begin_geometry(const SceneTargets& t) {
 void WaterShading::shade(const SceneTargets& t, bool sheets) {
     glBindFramebuffer(GL_FRAMEBUFFER, shade_fbo_.id());
     glViewport(0, 0, t.width(), t.height());
-    glDisable(GL_BLEND);
     t.depth().bind(kDepthUnit);
     t.normal().bind(kNormalUnit);
     kind_.bind(kKindUnit);
     gl::bind_empty_vertex_array();
 
     // The mask, depth only.
+    gl::apply({.depth_test = true, .depth_write = true, .depth_func = GL_ALWAYS, .colour_write = false});
     const float far = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &far);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     mask_.use();
     mask_.set("u_kind", int(kKindUnit));
     mask_.set("u_sea_depth", kSeaMask);
@@ -75,9 +72,7 @@ void WaterShading::shade(const SceneTargets& t, bool sheets) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     // The shading passes, where the mask lets them through.
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_FALSE);
-    glDepthFunc(GL_GREATER);
+    gl::apply({.depth_test = true, .depth_func = GL_GREATER});
     auto pass = [&](const gl::Program& p, float depth) {
         p.use();
         p.set("u_window_depth", depth);
@@ -88,8 +83,6 @@ void WaterShading::shade(const SceneTargets& t, bool sheets) {
     };
     pass(*sea_program_, kSeaPassDepth);
     if (sheets) pass(*sheet_program_, kSheetPassDepth);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
 }
 
 }  // namespace effects

@@ -5,6 +5,7 @@
 #include <cstddef>
 
 #include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
 
 namespace effects {
 
@@ -57,8 +58,7 @@ void WaterSurfaceRenderer::update(const WaterView& view) {
         heights_.upload<float>(GL_RED, GL_FLOAT, view.grid->heights);
         glBindFramebuffer(GL_FRAMEBUFFER, slope_fbo_.id());
         glViewport(0, 0, shape.size, shape.size);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
+        gl::apply(gl::kFullScreen);
         slope_program_.use();
         slope_program_.set("u_heights", int(kHeightsUnit));
         slope_program_.set("u_spacing", shape.spacing_m);

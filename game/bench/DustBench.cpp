@@ -14,14 +14,11 @@
 #include "effects/dust/FibreTexture.h"
 #include "effects/dust/FibreVolume.h"
 #include "effects/dust/SkyExposure.h"
+#include "effects/gl/PipelineState.h"
 #include "effects/gl/Program.h"
-#include "effects/scene/EnvironmentPass.h"
-#include "effects/scene/ShadowPass.h"
-#include "effects/scene/SkyOcclusionPass.h"
 #include "game/bench/BenchSupport.h"
-#include "game/capture/FrameCapture.h"
 #include "game/level/LevelLoader.h"
-#include "game/session/GameSession.h"
+#include "game/stage/RenderStage.h"
 #include "sim/dust/DustAccumulation.h"
 #include "sim/dust/DustField.h"
 
@@ -99,14 +96,15 @@ void bench_dust_cpu(BenchReport& report, bool quick) {
 }
 
 void bench_dust_render(BenchReport& report, int width, int height, bool quick, DustBenchView where) {
-    GameSession s = GameSession::open("harbour", 1);
-    const sim::DustField* field = s.world->find<sim::DustField>();
+    // The dust's lighting (environment, shadow, sky occlusion) and the dust pass.
+    RenderStage stage("harbour", {.width = width,
+                                  .height = height,
+                                  .passes = effects::PassSet::of({"environment", "shadow", "sky occlusion", "dust"}),
+                                  .environment_size = 64});
+    const sim::DustField* field = stage.world().find<sim::DustField>();
     if (!field) return;
-    effects::SceneResources scene{s.level.scene, effects::SceneGeometry(s.level.scene, s.world->terrain()),
-                                  effects::SceneLighting(64, 1024), effects::SceneTargets{}};
-    scene.lighting.sky.sun_dir = glm::normalize(s.world->level().sun_direction);
-    scene.targets.resize(width, height);
-    FrameCapture capture(width, height);
+    effects::SceneResources& scene = stage.scene();
+    const effects::SceneDesc& desc = scene.desc;
     sim::CameraView view;
     if (where == DustBenchView::Warehouse) {  // inside the door, over the crates, the shelf and the old car
         view.eye = {-39.0f, 4.0f, -36.5f};
@@ -118,27 +116,18 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
         view.fov_y_deg = 50.0f;
     }
     effects::Camera camera = effects::make_camera(view, float(width) / float(height));
-    effects::FrameContext frame{*s.world, camera, scene, capture.output(), 0.0, effects::capture_poses(*s.world)};
-    effects::EnvironmentPass environment;
-    effects::ShadowPass shadow;
-    effects::SkyOcclusionPass sky;
-    effects::DustPass dust;
-    environment.render(frame);
-    shadow.render(frame);
-    sky.render(frame);
+    stage.draw(camera, {.skip = effects::PassSet::of({"dust"})});
+    const effects::FrameContext frame = stage.context(camera);
+    effects::DustPass& dust = stage.pass<effects::DustPass>();
 
-    const std::vector<size_t> props = dusty_scene_props(s.level.scene, *field);
+    const std::vector<size_t> props = dusty_scene_props(desc, *field);
     std::vector<std::unique_ptr<effects::GpuModel>> models;
-    for (size_t i : props) models.push_back(std::make_unique<effects::GpuModel>(s.level.scene.models[size_t(s.level.scene.props[i].model)]));
+    for (size_t i : props) models.push_back(std::make_unique<effects::GpuModel>(desc.models[size_t(desc.props[i].model)]));
     effects::gl::Program mesh = effects::gl::Program::from_files("bench.mesh", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"});
     auto draw_props = [&] {
         glBindFramebuffer(GL_FRAMEBUFFER, scene.targets.scene().id());
         glViewport(0, 0, width, height);
-        glEnable(GL_DEPTH_TEST);
-        glDepthMask(GL_TRUE);
-        glDepthFunc(GL_LESS);
-        glDisable(GL_BLEND);
-        glEnable(GL_CULL_FACE);
+        effects::gl::PipelineScope state({.depth_test = true, .depth_write = true, .cull_back_faces = true});
         mesh.use();
         scene.lighting.apply(mesh);
         mesh.set("u_view_proj", camera.view_proj);
@@ -146,12 +135,11 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
         mesh.set("u_surface", 0);
         mesh.set("u_tint", glm::vec4(1.0f));
         for (size_t k = 0; k < props.size(); ++k) {
-            const glm::mat4& m = s.level.scene.props[props[k]].transform;
+            const glm::mat4& m = desc.props[props[k]].transform;
             mesh.set("u_model", m);
             mesh.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(m))));
             models[k]->draw(mesh, false);
         }
-        glDisable(GL_CULL_FACE);
     };
     auto clear = [&] {
         glBindFramebuffer(GL_FRAMEBUFFER, scene.targets.scene().id());

@@ -14,6 +14,7 @@
 #include "effects/energy/EnergyProbe.h"
 #include "effects/gl/EmptyVertexArray.h"
 #include "effects/gl/Framebuffer.h"
+#include "effects/gl/PipelineState.h"
 #include "effects/gl/Program.h"
 #include "effects/scene/FrameContext.h"
 #include "game/bench/BenchSupport.h"
@@ -235,7 +236,8 @@ void bench_full_screen(BenchReport& report, bool quick) {
     v.eye = {0.2f, 0.1f, 0.0f};
     v.target = {0.0f, 0.0f, -10.0f};
     const effects::Camera cam = effects::make_camera(v, float(W) / float(H));
-    const effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0, effects::capture_poses(world)};
+    const effects::FrameData data;  // the bench draws its own segments
+    const effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0, effects::capture_poses(world), data};
     std::vector<EnergySegment> shot;
     glm::vec3 p(0.0f, 0.0f, 3.0f);
     for (int i = 0; i < 4; ++i) {
@@ -276,9 +278,7 @@ void bench_full_screen(BenchReport& report, bool quick) {
     target.check_complete();
     target.bind();
     glViewport(0, 0, W, H);
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    effects::gl::apply({.blend = effects::gl::kAdd});
     fill.use();
     effects::gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -287,7 +287,7 @@ void bench_full_screen(BenchReport& report, bool quick) {
     for (int f = 0; f < frames; ++f) glDrawArrays(GL_TRIANGLES, 0, 3);
     glFinish();
     const double fill_ms = seconds_since(start) * 1e3 / frames;
-    glDisable(GL_BLEND);
+    effects::gl::apply(effects::gl::kInitialState);
     report.add({"energy", "full-screen energy glow @1280x720", glow_ms, "ms", std::nullopt, false,
                 std::to_string(tiles) + " tiles, " + fmt("%.1f", double(pairs) / double(std::max<size_t>(tiles, 1))) +
                     " segments a tile, no bloom"});

@@ -18,6 +18,7 @@
 #include "game/bench/BenchSupport.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/session/GameSession.h"
+#include "game/stage/RenderStage.h"
 #include "sim/fluid/FluidScenes.h"
 #include "sim/fluid/FluidTank.h"
 #include "sim/objects/ThrownObjects.h"
@@ -32,11 +33,15 @@ constexpr float kDegPerRad = 57.2957795f;
 // The fluid pass alone over a plain background: scene targets, lighting and a camera.
 struct FluidStage {
     FluidStage(int w, int h)
-        : width(w), height(h), world(bench_level()),
-          scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(16, 256),
-                effects::SceneTargets{}} {
-        scene.targets.resize(w, h);
-    }
+        : width(w),
+          height(h),
+          stage(bench_level(), {.width = w,
+                                .height = h,
+                                .passes = effects::PassSet::of({"fluid"}),
+                                .environment_size = 16,
+                                .shadow_map_size = 256}),
+          scene(stage.scene()),
+          pass(stage.pass<effects::FluidPass>()) {}
 
     static sim::LevelDesc bench_level() {
         sim::LevelDesc l;
@@ -56,8 +61,7 @@ struct FluidStage {
         const float sky[4] = {0.35f, 0.45f, 0.55f, 1.0f}, far = 1.0f;
         glClearNamedFramebufferfv(scene.targets.scene().id(), GL_COLOR, 0, sky);
         glClearNamedFramebufferfv(scene.targets.scene().id(), GL_DEPTH, 0, &far);
-        effects::FrameContext frame{world, camera, scene, {0, width, height}, 0.0, effects::capture_poses(world)};
-        pass.draw(frame, view);
+        pass.draw(stage.context(camera), view);
     }
 
     // A texture's texels, GL row order.
@@ -75,11 +79,10 @@ struct FluidStage {
     }
 
     int width, height;
-    sim::World world;
-    effects::SceneDesc desc;
-    effects::SceneResources scene;
+    RenderStage stage;
+    effects::SceneResources& scene;
+    effects::FluidPass& pass;
     effects::Camera camera;
-    effects::FluidPass pass;
 };
 
 // The analytic shapes: where the eye ray through a pixel meets them (view space).

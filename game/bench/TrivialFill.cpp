@@ -6,6 +6,7 @@
 
 #include "effects/gl/EmptyVertexArray.h"
 #include "effects/gl/Framebuffer.h"
+#include "effects/gl/PipelineState.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 
@@ -26,9 +27,7 @@ double trivial_fill_ms(int width, int height, int repeats) {
     target.check_complete();
     target.bind();
     glViewport(0, 0, width, height);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    effects::gl::PipelineScope state(effects::gl::kFullScreen);
     fill.use();
     effects::gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);  // the first draw compiles llvmpipe's variant

@@ -1,0 +1,47 @@
+#pragma once
+// The frame's named resources, what passes declare they read and write
+// (PassDeclaration.h). Frame data is made before the passes run and is read-only to
+// them; the rest is made by a pass.
+#include <string_view>
+
+namespace effects {
+
+enum class FrameResource {
+    // Frame data, made once before the passes (Renderer::render).
+    Sky,    // sun direction and radiance, sky, the weather's look (SceneLighting::sky, ::weather)
+    Shots,  // the energy shots in flight, gathered from the world once (FrameContext::data.energy)
+    // Made by passes.
+    EnvironmentCube,  // SceneLighting::env_cube
+    ShadowMap,        // SceneLighting::shadow_map and shadow_view_proj
+    SkyOcclusion,     // SceneLighting::sky_map and sky_view_proj
+    LineLights,       // SceneLighting's line-light block
+    SceneColour,      // SceneTargets::colour()
+    Normals,          // SceneTargets::normal()
+    Depth,            // SceneTargets::depth()
+    SceneCopy,        // SceneTargets::colour_copy(), depth_copy()
+    Display,          // the tone-mapped image: SceneTargets::display(), or the output itself at scale 1
+    Output,           // RenderOutput
+};
+
+// Made before the passes run, so no pass may write it.
+constexpr bool is_frame_data(FrameResource r) { return r == FrameResource::Sky || r == FrameResource::Shots; }
+
+constexpr std::string_view name_of(FrameResource r) {
+    switch (r) {
+        case FrameResource::Sky: return "sky";
+        case FrameResource::Shots: return "shots";
+        case FrameResource::EnvironmentCube: return "environment cube";
+        case FrameResource::ShadowMap: return "shadow map";
+        case FrameResource::SkyOcclusion: return "sky occlusion";
+        case FrameResource::LineLights: return "line lights";
+        case FrameResource::SceneColour: return "scene colour";
+        case FrameResource::Normals: return "normals";
+        case FrameResource::Depth: return "depth";
+        case FrameResource::SceneCopy: return "scene copy";
+        case FrameResource::Display: return "display";
+        case FrameResource::Output: return "output";
+    }
+    return "?";
+}
+
+}  // namespace effects
