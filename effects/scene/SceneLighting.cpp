@@ -73,4 +73,35 @@ bool SceneLighting::line_lights_reach(glm::vec3 lo, glm::vec3 hi) const {
                        [&](const LineLight& l) { return line_light_reaches(l, lo, hi); });
 }
 
+void SceneLighting::set_weather(const WeatherLook& look) {
+    weather = look;
+    sky.sun_radiance = kClearSunRadiance * look.sunlight;
+    sky.sky_intensity = look.sky_intensity;
+    sky.overcast = look.overcast;
+}
+
+void SceneLighting::apply_sky(const gl::Program& p) const {
+    p.set("u_sun_dir", sky.sun_dir);
+    p.set("u_sun_radiance", sky.sun_radiance);
+    p.set("u_sky_intensity", sky.sky_intensity);
+    p.set("u_overcast", sky.overcast);
+}
+
+void SceneLighting::apply(const gl::Program& p) const {
+    apply_sky(p);
+    // Texture coordinates in [0,1] and depth in [0,1] from clip space.
+    glm::mat4 bias(0.5f);
+    bias[3] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+    p.set("u_shadow_matrix", bias * shadow_view_proj);
+    p.set("u_env_max_lod", env_max_lod());
+    p.set("u_env", int(kEnvUnit));
+    p.set("u_shadow_map", int(kShadowUnit));
+    p.set("u_sky_matrix", bias * sky_view_proj);
+    p.set("u_sky_map", int(kSkyUnit));
+    env_cube.bind(kEnvUnit);
+    shadow_map.bind(kShadowUnit);
+    sky_map.bind(kSkyUnit);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLineLightBinding, line_lights_.id());
+}
+
 }  // namespace effects
