@@ -94,7 +94,7 @@ private:
 
     FluidView view_;  // reused each frame
     // The kernels' rebuild on both cores: it runs on the frame's critical path (a few ms
-    // of the tank's frame at a low render scale), while the rasteriser's threads wait.
+    // of the tank's frame at a low render scale).
     sim::JobPool kernel_jobs_{2};
     FluidSmoothing smoothing_;
     bool smoothing_set_ = false;  // by the level (first frame) or set_smoothing()
