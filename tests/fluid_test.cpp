@@ -20,6 +20,7 @@
 #include "SimTestLevel.h"
 #include "game/level/LevelError.h"
 #include "game/session/GameSession.h"
+#include "sim/core/JobPool.h"
 #include "sim/fluid/AnisotropicKernels.h"
 #include "sim/fluid/FluidScenes.h"
 #include "sim/fluid/FluidTank.h"
@@ -189,6 +190,22 @@ TEST(AnisotropicKernels, IsolatedParticlesAreSpheresAndASurfaceFlattensThem) {
     EXPECT_LT(lengths[thin], 0.7f * 0.02f);
     EXPECT_NEAR(lengths[0] * lengths[1] * lengths[2], 0.02f * 0.02f * 0.02f, 1e-9f);
     EXPECT_LE(*std::max_element(lengths, lengths + 3) / lengths[thin], 4.0f + 1e-3f);
+}
+
+TEST(AnisotropicKernels, TheSameOnAPoolOfThreads) {
+    sim::AnisotropyParams a;
+    a.particle_radius_m = 0.02f;
+    a.neighbourhood_m = 0.16f;
+    std::vector<glm::vec3> pts = sim::fill_block({0, 0, 0}, {0.6f, 0.2f, 0.6f}, 0.02f, 15 * 15 * 5, 4);
+    std::vector<sim::FluidEllipsoid> alone, shared;
+    sim::anisotropic_kernels(pts, a, alone);
+    sim::JobPool jobs(3);
+    sim::anisotropic_kernels(pts, a, shared, &jobs);
+    ASSERT_EQ(alone.size(), shared.size());
+    for (size_t i = 0; i < alone.size(); ++i) {
+        EXPECT_EQ(alone[i].centre, shared[i].centre);
+        for (int k = 0; k < 3; ++k) EXPECT_EQ(alone[i].axis[k], shared[i].axis[k]);
+    }
 }
 
 // A stone of 25 cm dropped from 4.5 m above the test tank's floor, over its middle.

@@ -102,7 +102,7 @@ void FluidPass::render(const FrameContext& frame) {
         times_ = {};
         return;
     }
-    gather_fluid_view(frame.world, view_);
+    gather_fluid_view(frame.world, view_, &kernel_jobs_);
     if (!smoothing_set_) {  // the level's settings, once: the debug panel may change them after
         const sim::FluidTankDesc& d = frame.world.level().fluid;
         FluidSmoothing s;

@@ -13,6 +13,7 @@
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 #include "effects/scene/Pass.h"
+#include "sim/core/JobPool.h"
 
 namespace effects {
 
@@ -92,6 +93,9 @@ private:
     int width_ = 0, height_ = 0;
 
     FluidView view_;  // reused each frame
+    // The kernels' rebuild on both cores: it runs on the frame's critical path (a few ms
+    // of the tank's frame at a low render scale).
+    sim::JobPool kernel_jobs_{2};
     FluidSmoothing smoothing_;
     bool smoothing_set_ = false;  // by the level (first frame) or set_smoothing()
     bool profiling_ = false, probe_ = false;

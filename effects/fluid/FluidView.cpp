@@ -12,12 +12,12 @@ sim::AnisotropyParams anisotropy_for(float particle_radius_m) {
 }
 
 void make_fluid_view(const sim::ParticleFluid& fluid, const glm::mat4& tank_to_world, glm::vec3 tank_size,
-                     FluidView& out) {
+                     FluidView& out, sim::JobPool* jobs) {
     out.tank_to_world = tank_to_world;
     out.tank_size = tank_size;
     out.particle_radius_m = fluid.params().particle_radius_m;
     if (fluid.positions() != out.kernel_positions || out.kernels.size() != fluid.positions().size()) {
-        sim::anisotropic_kernels(fluid.positions(), anisotropy_for(out.particle_radius_m), out.kernels);
+        sim::anisotropic_kernels(fluid.positions(), anisotropy_for(out.particle_radius_m), out.kernels, jobs);
         out.kernel_positions = fluid.positions();
     }
     const std::vector<sim::FluidEllipsoid>& all = out.kernels;
@@ -32,10 +32,10 @@ void make_fluid_view(const sim::ParticleFluid& fluid, const glm::mat4& tank_to_w
     }
 }
 
-bool gather_fluid_view(const sim::World& world, FluidView& out) {
+bool gather_fluid_view(const sim::World& world, FluidView& out, sim::JobPool* jobs) {
     const sim::FluidTank* tank = world.find<sim::FluidTank>();
     if (!tank) return false;
-    make_fluid_view(tank->fluid(), tank->tank_to_world(), tank->inner_size(), out);
+    make_fluid_view(tank->fluid(), tank->tank_to_world(), tank->inner_size(), out, jobs);
     return true;
 }
 

@@ -10,6 +10,7 @@
 #include "sim/world/World.h"
 
 namespace sim {
+class JobPool;
 class ParticleFluid;
 }
 
@@ -30,10 +31,11 @@ struct FluidView {
 // The anisotropy settings for a fluid of this particle radius (neighbourhood 2 h).
 sim::AnisotropyParams anisotropy_for(float particle_radius_m);
 
-// Builds the view of a particle fluid whose frame is placed by tank_to_world.
+// Builds the view of a particle fluid whose frame is placed by tank_to_world; `jobs`, if
+// given, shares the kernels' rebuild among its threads.
 void make_fluid_view(const sim::ParticleFluid& fluid, const glm::mat4& tank_to_world, glm::vec3 tank_size,
-                     FluidView& out);
+                     FluidView& out, sim::JobPool* jobs = nullptr);
 // The world's tank, if it has one (false otherwise).
-bool gather_fluid_view(const sim::World& world, FluidView& out);
+bool gather_fluid_view(const sim::World& world, FluidView& out, sim::JobPool* jobs = nullptr);
 
 }  // namespace effects

@@ -39,12 +39,14 @@ void GpuModel::draw(const gl::Program& program, bool depth_only) const {
 }
 
 void GpuModel::draw_visible(const gl::Program& program, bool depth_only, const Frustum& view,
-                            const glm::mat4& model_to_world, bool skip_level_meshes) const {
+                            const glm::mat4& model_to_world, bool skip_level_meshes,
+                            const std::function<bool(glm::vec3, glm::vec3)>& select) const {
     vao_.bind();
     for (const Range& r : ranges_) {
         if (skip_level_meshes && r.hi.y - r.lo.y < 1e-3f) continue;
         const glm::vec3 a(model_to_world * glm::vec4(r.lo, 1.0f)), b(model_to_world * glm::vec4(r.hi, 1.0f));
-        if (!view.outside(glm::min(a, b), glm::max(a, b))) draw_range(program, depth_only, r);
+        const glm::vec3 lo = glm::min(a, b), hi = glm::max(a, b);
+        if (!view.outside(lo, hi) && (!select || select(lo, hi))) draw_range(program, depth_only, r);
     }
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // A model uploaded to the GPU: one vertex and one index buffer, a draw range per mesh.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,9 +22,11 @@ public:
     void draw(const gl::Program& program, bool depth_only) const;
     // Only the meshes whose bounds (model space, placed by `model_to_world`, which must
     // keep axes axis-aligned: a translation and scale) `view` can see; with
-    // `skip_level_meshes`, not those whose bounds are flat and level either.
+    // `skip_level_meshes`, not those whose bounds are flat and level either; with
+    // `select`, only those whose world bounds it keeps.
     void draw_visible(const gl::Program& program, bool depth_only, const Frustum& view,
-                      const glm::mat4& model_to_world, bool skip_level_meshes = false) const;
+                      const glm::mat4& model_to_world, bool skip_level_meshes = false,
+                      const std::function<bool(glm::vec3, glm::vec3)>& select = {}) const;
     // The same, with each mesh placed by `place(mesh_name, mesh_centre)` first (moving
     // parts: a car's wheels).
     template <class Place>

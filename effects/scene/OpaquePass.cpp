@@ -23,21 +23,31 @@ void OpaquePass::render(const FrameContext& frame) {
     glClear(GL_DEPTH_BUFFER_BIT);
 
     const bool line_lights = frame.scene.lighting.has_line_lights();
-    const gl::Program& objects = objects_.get(frame.scene.quality, line_lights);
     if (!ground_)
         ground_.emplace("opaque.ground", std::vector<std::string_view>{"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"},
                         std::vector<std::string>{"GROUND", "ROAD_COUNT " +
                                                                std::to_string(frame.scene.geometry.ground_road_count())});
-    const gl::Program& ground = ground_->get(frame.scene.quality, line_lights);
-    for (const gl::Program* p : {&objects, &ground}) {
-        frame.scene.lighting.apply(*p);
-        p->set("u_view_proj", frame.camera.view_proj);
-        p->set("u_eye", frame.camera.eye);
+    const SceneLighting& lighting = frame.scene.lighting;
+    const Frustum view(frame.camera.view_proj);
+    // With beams flying, what they reach is drawn with the line-light sum and the rest
+    // without it: the sum is a lit pixel's costliest loop, and a beam lights a few
+    // metres around it.
+    for (const bool lit : {true, false}) {
+        if (lit && !line_lights) continue;
+        const gl::Program& objects = objects_.get(frame.scene.quality, lit);
+        const gl::Program& ground = ground_->get(frame.scene.quality, lit);
+        for (const gl::Program* p : {&objects, &ground}) {
+            lighting.apply(*p);
+            p->set("u_view_proj", frame.camera.view_proj);
+            p->set("u_eye", frame.camera.eye);
+        }
+        frame.scene.geometry.apply_ground(ground);
+        ground.set("u_wetness", lighting.weather.road_wetness);
+        SceneGeometry::Select select;
+        if (line_lights)
+            select = [&lighting, lit](glm::vec3 lo, glm::vec3 hi) { return lighting.line_lights_reach(lo, hi) == lit; };
+        frame.scene.geometry.draw(objects, ground, frame.poses, SceneGeometry::Use::Shading, view, select);
     }
-    frame.scene.geometry.apply_ground(ground);
-    ground.set("u_wetness", frame.scene.lighting.weather.road_wetness);
-    frame.scene.geometry.draw(objects, ground, frame.poses, SceneGeometry::Use::Shading,
-                              Frustum(frame.camera.view_proj));
 
     // Sky last, only where nothing was drawn: the far plane passes GL_LEQUAL.
     gl::apply({.depth_test = true, .depth_func = GL_LEQUAL});

@@ -21,6 +21,19 @@ Model glowing(Model m, glm::vec3 emissive) {
     return m;
 }
 
+// The world-space box around a model's bounds placed by `transform`.
+std::pair<glm::vec3, glm::vec3> world_box(const Model& m, const glm::mat4& transform) {
+    glm::vec3 lo(0.0f), hi(0.0f);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner(c & 1 ? m.bounds_max.x : m.bounds_min.x, c & 2 ? m.bounds_max.y : m.bounds_min.y,
+                               c & 4 ? m.bounds_max.z : m.bounds_min.z);
+        const glm::vec3 p(transform * glm::vec4(corner, 1.0f));
+        lo = c == 0 ? p : glm::min(lo, p);
+        hi = c == 0 ? p : glm::max(hi, p);
+    }
+    return {lo, hi};
+}
+
 // The model matrix, and the normal matrix once per draw on the CPU, not per vertex on the GPU.
 void place(const gl::Program& p, const glm::mat4& model, bool depth_only) {
     p.set("u_model", model);
@@ -39,15 +52,7 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
       hit_sphere_(glowing(make_sphere_model(12, 20), glm::vec3(0.2f, 1.4f, 0.3f))) {
     for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
     for (size_t i = 0; i < desc.props.size(); ++i) {
-        const Model& m = desc.models[size_t(desc.props[i].model)];
-        glm::vec3 lo(0.0f), hi(0.0f);
-        for (int c = 0; c < 8; ++c) {
-            const glm::vec3 corner(c & 1 ? m.bounds_max.x : m.bounds_min.x, c & 2 ? m.bounds_max.y : m.bounds_min.y,
-                                   c & 4 ? m.bounds_max.z : m.bounds_min.z);
-            const glm::vec3 p(desc.props[i].transform * glm::vec4(corner, 1.0f));
-            lo = c == 0 ? p : glm::min(lo, p);
-            hi = c == 0 ? p : glm::max(hi, p);
-        }
+        const auto [lo, hi] = world_box(desc.models[size_t(desc.props[i].model)], desc.props[i].transform);
         prop_bounds_.emplace_back(lo, hi);
         props_min_ = i == 0 ? lo : glm::min(props_min_, lo);
         props_max_ = i == 0 ? hi : glm::max(props_max_, hi);
@@ -74,18 +79,19 @@ void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
 }
 
 void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const FramePoses& poses, Use use,
-                         const Frustum& view) const {
+                         const Frustum& view, const Select& select) const {
     const bool depth_only = use != Use::Shading;
+    auto kept = [&](glm::vec3 lo, glm::vec3 hi) { return !view.outside(lo, hi) && (!select || select(lo, hi)); };
     auto material = [&](glm::vec4 tint) {
         if (!depth_only) p.set("u_tint", tint);
     };
     p.use();
     material(glm::vec4(1.0f));
-    if (use != Use::StillShadowCasters) draw_moving(p, poses, depth_only, view);
+    if (use != Use::StillShadowCasters) draw_moving(p, poses, depth_only, view, select);
     if (use == Use::MovingShadowCasters) return;
     material(glm::vec4(1.0f));
     for (size_t i = 0; i < desc_.props.size(); ++i) {
-        if (view.outside(prop_bounds_[i].first, prop_bounds_[i].second)) continue;
+        if (!kept(prop_bounds_[i].first, prop_bounds_[i].second)) continue;
         const PropInstance& inst = desc_.props[i];
         place(p, inst.transform, depth_only);
         models_[size_t(inst.model)]->draw(p, depth_only);
@@ -96,15 +102,20 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     // the shadow map, it saves the raster of most of the map and cannot self-shadow.
     ground.use();
     place(ground, glm::mat4(1.0f), depth_only);
-    terrain_.draw_visible(ground, depth_only, view, glm::mat4(1.0f), depth_only);
+    terrain_.draw_visible(ground, depth_only, view, glm::mat4(1.0f), depth_only, select);
 }
 
 void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, bool depth_only,
-                                const Frustum& view) const {
+                                const Frustum& view, const Select& select) const {
+    auto selected = [&](const Model& m, const glm::mat4& transform) {
+        if (!select) return true;
+        const auto [lo, hi] = world_box(m, transform);
+        return select(lo, hi);
+    };
     auto material = [&](glm::vec4 tint) {
         if (!depth_only) p.set("u_tint", tint);
     };
-    if (desc_.car_model >= 0) {
+    if (desc_.car_model >= 0 && selected(desc_.models[size_t(desc_.car_model)], poses.car.matrix())) {
         // Wheels and hubcaps (meshes "wheel_fl", "hubcap_rr", ...) turn
         // about their axle (model z) and the front ones steer about their vertical. In the
         // cabin the needle turns about the dial's centre and the wiper stalk about the
@@ -132,24 +143,26 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
             place(p, glm::translate(m, -centre), depth_only);
         });
     }
-    if (desc_.boat_model >= 0) {
+    if (desc_.boat_model >= 0 && selected(desc_.models[size_t(desc_.boat_model)], poses.boat.matrix())) {
         place(p, poses.boat.matrix(), depth_only);
         models_[size_t(desc_.boat_model)]->draw(p, depth_only);
     }
     for (const FramePoses::Object& o : poses.objects) {
-        if (view.outside(o.position - o.radius_m, o.position + o.radius_m)) continue;
+        const glm::vec3 lo = o.position - o.radius_m, hi = o.position + o.radius_m;
+        if (view.outside(lo, hi) || (select && !select(lo, hi))) continue;
         // Stones grey, floats bright orange so they read on the water.
         material(o.sinks ? glm::vec4(0.18f, 0.18f, 0.17f, 1.0f) : glm::vec4(0.9f, 0.28f, 0.04f, 1.0f));
         glm::mat4 m = glm::translate(glm::mat4(1.0f), o.position) * glm::scale(glm::mat4(1.0f), glm::vec3(o.radius_m));
         place(p, m, depth_only);
         sphere_.draw(p, depth_only);
     }
-    draw_markers(p, poses, depth_only, view);
+    draw_markers(p, poses, depth_only, view, select);
 }
 
-void SceneGeometry::draw_markers(const gl::Program& p, const FramePoses& poses, bool depth_only, const Frustum& view) const {
+void SceneGeometry::draw_markers(const gl::Program& p, const FramePoses& poses, bool depth_only, const Frustum& view,
+                                 const Select& select) const {
     for (const ObjectiveMarker& m : poses.markers) {
-        if (view.outside(m.lo, m.hi)) continue;
+        if (view.outside(m.lo, m.hi) || (select && !select(m.lo, m.hi))) continue;
         if (!depth_only) p.set("u_tint", m.tint);
         place(p, m.transform, depth_only);
         const bool ball = m.shape == ObjectiveMarker::Shape::Ball;

@@ -1,6 +1,7 @@
 #pragma once
 // Everything opaque in the level: terrain, props, the car, the boat and the thrown
 // objects, drawn the same way by the shadow and the opaque passes.
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -23,10 +24,14 @@ public:
     // the ground's relief; level ground is left out) or those that move (vehicles,
     // thrown objects).
     enum class Use { Shading, StillShadowCasters, MovingShadowCasters };
-    // What `view` can see, nearest kinds first (the vehicles, thrown objects, props,
-    // then the ground) so that the early depth test spares hidden pixels their shading.
+    // Which world-space boxes a draw keeps (a vehicle is one box, the ground a box per
+    // tile): all when empty.
+    using Select = std::function<bool(glm::vec3 lo, glm::vec3 hi)>;
+    // What `view` can see (and `select` keeps), nearest kinds first (the vehicles, thrown
+    // objects, props, then the ground) so that the early depth test spares hidden pixels
+    // their shading.
     void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
-              const Frustum& view) const;
+              const Frustum& view, const Select& select = {}) const;
     // The level's props alone: what stays put, for the top-down sky occlusion.
     void draw_props(const gl::Program& program, bool depth_only) const;
     // World-space bounds of the props (min = max = 0 without any).
@@ -41,10 +46,12 @@ public:
 
 private:
     // The car, the boat and the thrown objects.
-    void draw_moving(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view) const;
+    void draw_moving(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view,
+                     const Select& select) const;
     // The objectives' gates and targets: they change with the tick, so they cast their
     // shadows with what moves.
-    void draw_markers(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view) const;
+    void draw_markers(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view,
+                      const Select& select) const;
 
     const SceneDesc& desc_;
     const sim::LevelDesc& level_;

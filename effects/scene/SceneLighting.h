@@ -2,6 +2,7 @@
 // Sun, sky and their textures: the environment cube the sky fills and the sun's
 // shadow map. Every lit pass binds them with apply().
 #include <span>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -31,6 +32,10 @@ struct LineLight {
     float intensity = 0.0f;  // per metre of the segment
     glm::vec3 colour{1.0f};
 };
+
+// Whether `light` can reach into the box [lo, hi]: conservative (true may be out of
+// reach, false never is), for drawing what no beam lights without the line-light sum.
+bool line_light_reaches(const LineLight& light, glm::vec3 lo, glm::vec3 hi);
 
 class SceneLighting {
 public:
@@ -64,9 +69,12 @@ public:
     // The line lights of the frame (none unless set; beyond kMaxLineLights ignored).
     void set_line_lights(std::span<const LineLight> lights);
     bool has_line_lights() const { return line_light_count_ > 0; }
+    // Whether any of the frame's line lights reaches into the box [lo, hi].
+    bool line_lights_reach(glm::vec3 lo, glm::vec3 hi) const;
 
 private:
     int env_levels_;
+    std::vector<LineLight> line_light_list_;  // the first line_light_count_ of the frame's
     gl::Buffer line_lights_;
     int line_light_count_ = 0;
 };

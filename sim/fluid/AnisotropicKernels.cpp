@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "sim/core/DetMath.h"
+#include "sim/core/JobPool.h"
 
 namespace sim {
 
@@ -48,7 +49,7 @@ void symmetric_eigen(const float m[3][3], float values[3], glm::vec3 vectors[3])
 }
 
 void anisotropic_kernels(const std::vector<glm::vec3>& positions, const AnisotropyParams& p,
-                         std::vector<FluidEllipsoid>& out) {
+                         std::vector<FluidEllipsoid>& out, JobPool* jobs) {
     const size_t n = positions.size();
     out.resize(n);
     if (n == 0) return;
@@ -76,58 +77,64 @@ void anisotropic_kernels(const std::vector<glm::vec3>& positions, const Anisotro
         for (size_t i = 0; i < n; ++i) sorted[fill[cell[i]]++] = uint32_t(i);
     }
 
-    for (size_t i = 0; i < n; ++i) {
-        const glm::vec3 x = positions[i];
-        const glm::ivec3 c = cell_of(x);
-        // Weighted mean first (relative to x, for precision), then the covariance.
-        glm::vec3 mean(0.0f);
-        float wsum = 0.0f;
-        int count = 0;
-        auto each = [&](auto&& fn) {
+    // Each particle's kernel reads only the positions and the grid, and writes only its
+    // own ellipsoid: the pool may split them any way.
+    auto build = [&](size_t first, size_t end) {
+        for (size_t i = first; i < end; ++i) {
+            const glm::vec3 x = positions[i];
+            const glm::ivec3 c = cell_of(x);
+            // One pass over the neighbourhood: the weighted sums of d and of d d^T
+            // (relative to x, for precision) give the mean and the covariance about it.
+            glm::vec3 sum_d(0.0f);
+            float sum_dd[6] = {};  // xx, xy, xz, yy, yz, zz
+            float wsum = 0.0f;
+            int count = 0;
             for (int z = std::max(c.z - 2, 0); z <= std::min(c.z + 2, cells.z - 1); ++z)
                 for (int y = std::max(c.y - 2, 0); y <= std::min(c.y + 2, cells.y - 1); ++y) {
                     size_t row = (size_t(z) * size_t(cells.y) + size_t(y)) * size_t(cells.x);
-                    uint32_t first = start[row + size_t(std::max(c.x - 2, 0))];
-                    uint32_t last = start[row + size_t(std::min(c.x + 2, cells.x - 1)) + 1];
-                    for (uint32_t k = first; k < last; ++k) {
+                    uint32_t first_k = start[row + size_t(std::max(c.x - 2, 0))];
+                    uint32_t last_k = start[row + size_t(std::min(c.x + 2, cells.x - 1)) + 1];
+                    for (uint32_t k = first_k; k < last_k; ++k) {
                         glm::vec3 d = positions[sorted[k]] - x;
                         float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
                         if (d2 >= r2) continue;
                         float q = std::sqrt(d2) / r;
-                        fn(d, 1.0f - q * q * q, sorted[k] != i);
+                        float w = 1.0f - q * q * q;
+                        sum_d += w * d;
+                        sum_dd[0] += w * d.x * d.x;
+                        sum_dd[1] += w * d.x * d.y;
+                        sum_dd[2] += w * d.x * d.z;
+                        sum_dd[3] += w * d.y * d.y;
+                        sum_dd[4] += w * d.y * d.z;
+                        sum_dd[5] += w * d.z * d.z;
+                        wsum += w;
+                        count += sorted[k] != i ? 1 : 0;
                     }
                 }
-        };
-        each([&](glm::vec3 d, float w, bool other) {
-            mean += w * d;
-            wsum += w;
-            count += other ? 1 : 0;
-        });
-        mean /= wsum;  // the particle itself is always in its neighbourhood, weight 1
-        FluidEllipsoid& e = out[i];
-        e.centre = x + p.centre_smoothing * mean;
-        if (count < p.full_neighbours) {
-            e.axis[0] = {rp, 0.0f, 0.0f};
-            e.axis[1] = {0.0f, rp, 0.0f};
-            e.axis[2] = {0.0f, 0.0f, rp};
-            continue;
+            const glm::vec3 mean = sum_d / wsum;  // the particle itself is always in its neighbourhood, weight 1
+            FluidEllipsoid& e = out[i];
+            e.centre = x + p.centre_smoothing * mean;
+            if (count < p.full_neighbours) {
+                e.axis[0] = {rp, 0.0f, 0.0f};
+                e.axis[1] = {0.0f, rp, 0.0f};
+                e.axis[2] = {0.0f, 0.0f, rp};
+                continue;
+            }
+            const float xx = sum_dd[0] / wsum - mean.x * mean.x, xy = sum_dd[1] / wsum - mean.x * mean.y,
+                        xz = sum_dd[2] / wsum - mean.x * mean.z, yy = sum_dd[3] / wsum - mean.y * mean.y,
+                        yz = sum_dd[4] / wsum - mean.y * mean.z, zz = sum_dd[5] / wsum - mean.z * mean.z;
+            const float cov[3][3] = {{xx, xy, xz}, {xy, yy, yz}, {xz, yz, zz}};
+            float sigma[3];
+            glm::vec3 axes[3];
+            symmetric_eigen(cov, sigma, axes);
+            const float floor = std::max(sigma[0], 1e-12f) / p.max_stretch;
+            for (float& s : sigma) s = std::max(s, floor);
+            const float norm = rp / det::cbrt(sigma[0] * sigma[1] * sigma[2]);
+            for (int k = 0; k < 3; ++k) e.axis[k] = axes[k] * (sigma[k] * norm);
         }
-        float cov[3][3] = {};
-        each([&](glm::vec3 d, float w, bool) {
-            glm::vec3 u = d - mean;
-            for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) cov[a][b] += w * u[a] * u[b];
-        });
-        for (auto& row : cov)
-            for (float& v : row) v /= wsum;
-        float sigma[3];
-        glm::vec3 axes[3];
-        symmetric_eigen(cov, sigma, axes);
-        const float floor = std::max(sigma[0], 1e-12f) / p.max_stretch;
-        for (float& s : sigma) s = std::max(s, floor);
-        const float norm = rp / det::cbrt(sigma[0] * sigma[1] * sigma[2]);
-        for (int k = 0; k < 3; ++k) e.axis[k] = axes[k] * (sigma[k] * norm);
-    }
+    };
+    if (jobs) jobs->parallel_for(n, build);
+    else build(0, n);
 }
 
 }  // namespace sim

@@ -9,6 +9,8 @@
 
 namespace sim {
 
+class JobPool;
+
 struct AnisotropyParams {
     float particle_radius_m = 0.03f;
     float neighbourhood_m = 0.24f;  // r of the weights 1 - (d/r)^3, about twice the kernel radius h
@@ -26,9 +28,10 @@ struct FluidEllipsoid {
 
 // Ellipsoids for `positions`. Isolated particles (and those with fewer than
 // full_neighbours) are spheres of the particle radius; the others keep the sphere's
-// volume (k_s chosen per particle) with stretch at most k_r.
+// volume (k_s chosen per particle) with stretch at most k_r. With `jobs`, the
+// particles are shared among its threads (the same result for any count).
 void anisotropic_kernels(const std::vector<glm::vec3>& positions, const AnisotropyParams& params,
-                         std::vector<FluidEllipsoid>& out);
+                         std::vector<FluidEllipsoid>& out, JobPool* jobs = nullptr);
 
 // Eigen-decomposition of a symmetric 3x3 matrix (cyclic Jacobi): eigenvalues
 // descending, eigenvectors as unit columns in the same order.
