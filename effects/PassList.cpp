@@ -8,6 +8,7 @@
 #include "effects/dust/DustPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/FxaaPass.h"
+#include "effects/scene/MirrorPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
@@ -25,6 +26,7 @@ std::vector<std::unique_ptr<Pass>> make_pass_list() {
     passes.push_back(std::make_unique<SkyOcclusionPass>());  // once: the props stay put
     passes.push_back(std::make_unique<EnergyLightPass>());  // before anything is lit
     passes.push_back(std::make_unique<OpaquePass>());
+    passes.push_back(std::make_unique<MirrorPass>());  // the view behind, on the mirror's glass
     passes.push_back(std::make_unique<DustPass>());  // shells over the opaque dusty props
     passes.push_back(std::make_unique<SceneCopyPass>());
     passes.push_back(std::make_unique<WaterPass>());

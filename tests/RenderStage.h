@@ -22,6 +22,7 @@
 #include "effects/rain/RainStreakPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/FxaaPass.h"
+#include "effects/scene/MirrorPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
@@ -50,11 +51,12 @@ enum StagePass : unsigned {
     kTonemapPass = 1u << 12,
     kUpscalePass = 1u << 13,
     kFxaaPass = 1u << 14,
+    kMirrorPass = 1u << 15,
 };
 using StagePasses = unsigned;
 // The lit opaque scene: sky, shadows and sky occlusion for the terrain and props.
 constexpr StagePasses kLitScene = kEnvironmentPass | kShadowPass | kSkyOcclusionPass | kOpaquePass;
-constexpr StagePasses kEveryPass = (kFxaaPass << 1) - 1;
+constexpr StagePasses kEveryPass = (kMirrorPass << 1) - 1;
 
 // Which bit a pass of effects::make_pass_list() is: a pass the stage does not know
 // yet is an error, not a pass silently left out.
@@ -74,6 +76,7 @@ inline StagePass stage_pass_of(const effects::Pass& p) {
     if (dynamic_cast<const effects::TonemapPass*>(&p)) return kTonemapPass;
     if (dynamic_cast<const effects::UpscalePass*>(&p)) return kUpscalePass;
     if (dynamic_cast<const effects::FxaaPass*>(&p)) return kFxaaPass;
+    if (dynamic_cast<const effects::MirrorPass*>(&p)) return kMirrorPass;
     throw std::logic_error("RenderStage has no bit for the pass \"" + std::string(p.name()) + "\"");
 }
 
