@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -18,6 +19,9 @@ namespace {
 // The view's width across the glass. A flat mirror a hand's width wide at arm's length
 // shows about 25 degrees behind; a little more reads better on a screen.
 constexpr float kFieldAcrossDeg = 36.0f;
+// Beyond this the picture shows the sky: the fog has half hidden what lies further, and
+// a far plane this near leaves most of the level's terrain and props to the culling.
+constexpr float kFarM = 150.0f;
 const glm::vec4 kSeaTint{0.018f, 0.045f, 0.05f, 1.0f};  // the sea, flat: a dark green-grey
 }  // namespace
 
@@ -94,6 +98,10 @@ void MirrorPass::render(const FrameContext& frame) {
     look.up = v.up;
     look.fov_y_deg = glm::degrees(2.0f * std::atan(std::tan(glm::radians(0.5f * kFieldAcrossDeg)) / aspect));
     v.camera = make_camera(look, aspect);
+    v.camera.far_m = kFarM;
+    v.camera.proj = glm::perspective(glm::radians(look.fov_y_deg), aspect, v.camera.near_m, v.camera.far_m);
+    v.camera.view_proj = v.camera.proj * v.camera.view;
+    v.camera.inv_view_proj = glm::inverse(v.camera.view_proj);
 
     const int height = std::max(1, width / 4);
     if (width != width_ || height != height_) {
@@ -127,13 +135,19 @@ void MirrorPass::draw_behind(const FrameContext& frame, const View& v) {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
 
-    const bool line_lights = frame.scene.lighting.has_line_lights();
-    const gl::Program& objects = objects_.get(frame.scene.quality, line_lights);
+    // Shaded as the low preset shades, one shadow tap and no reflections, and without the
+    // energy beams' light: the picture is small and seen in passing.
+    QualitySettings cheap = frame.scene.quality;
+    cheap.soft_shadows = false;
+    cheap.env_reflection = false;
+    cheap.ground_detail = false;
+    const bool line_lights = false;
+    const gl::Program& objects = objects_.get(cheap, line_lights);
     if (!ground_)
         ground_.emplace("mirror.ground", std::vector<std::string_view>{"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"},
                         std::vector<std::string>{"GROUND", "ROAD_COUNT " +
                                                                std::to_string(frame.scene.geometry.ground_road_count())});
-    const gl::Program& ground = ground_->get(frame.scene.quality, line_lights);
+    const gl::Program& ground = ground_->get(cheap, line_lights);
     for (const gl::Program* p : {&objects, &ground}) {
         frame.scene.lighting.apply(*p);
         p->set("u_view_proj", v.camera.view_proj);
