@@ -13,6 +13,7 @@
 #include "effects/rain/RainStreakPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/FxaaPass.h"
+#include "effects/scene/MirrorPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
@@ -45,6 +46,10 @@ const std::vector<PassEntry>& pass_table() {
         {"opaque",
          {.reads = {Sky, EnvironmentCube, ShadowMap, SkyOcclusion, LineLights}, .writes = {SceneColour, Normals, Depth}},
          make<OpaquePass>},
+        // The view behind, on the mirror's glass: drawn into its own small target.
+        {"mirror",
+         {.reads = {Sky, ShadowMap, SkyOcclusion, Depth}, .onto = {{SceneColour, "the view behind on the mirror's glass"}}},
+         make<MirrorPass>},
         {"dust",
          {.reads = {Sky, EnvironmentCube, ShadowMap, SkyOcclusion, LineLights},
           .onto = {{SceneColour, "shells and fins over the opaque dusty props"},

@@ -14,6 +14,7 @@ QualitySettings quality_settings(Quality quality) {
             s.fluid_kernel_max = 5;
             s.rain_map_width = 512;
             s.dust_max_shells = 8;
+            s.mirror_width = 128;
             break;
         case Quality::Low:
             s.render_scale = 0.5f;
@@ -26,6 +27,7 @@ QualitySettings quality_settings(Quality quality) {
             s.rain_map_width = 256;
             s.bloom = false;
             s.dust_max_shells = 4;
+            s.mirror_width = 0;
             break;
     }
     return s;

@@ -21,6 +21,8 @@ struct QualitySettings {
     int rain_map_width = 1024;     // the windshield's drop height map (half as tall)
     bool bloom = true;             // the energy glow's bloom
     int dust_max_shells = 12;      // shells per dusty prop up close
+    int mirror_width = 160;        // the rear-view mirror's picture of the view behind, a
+                                   // quarter as tall (0: the glass reflects the sky instead)
     // FXAA over the tone-mapped frame, off in every preset: on llvmpipe it costs about a
     // quarter of a high frame (docs/PERFORMANCE.md), so the player turns it on (F3).
     bool antialias = false;

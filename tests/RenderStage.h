@@ -24,6 +24,7 @@ inline const StagePasses kRainPass = StagePasses::of({"rain"});
 inline const StagePasses kTonemapPass = StagePasses::of({"tonemap"});
 inline const StagePasses kFxaaPass = StagePasses::of({"fxaa"});
 inline const StagePasses kUpscalePass = StagePasses::of({"upscale"});
+inline const StagePasses kMirrorPass = StagePasses::of({"mirror"});
 // The lit opaque scene: sky, shadows and sky occlusion for the terrain and props.
 inline const StagePasses kLitScene = kEnvironmentPass | kShadowPass | kSkyOcclusionPass | kOpaquePass;
 inline const StagePasses kEveryPass = StagePasses::all();

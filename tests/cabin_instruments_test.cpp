@@ -50,4 +50,26 @@ TEST(CabinInstruments, ColumnAxisPointsBackAndUpAtTheDriver) {
     EXPECT_GT(a.y, 0.0f);
 }
 
+TEST(CabinInstruments, HelmWheelFollowsTheBoatsSteeringToFullHelm) {
+    EXPECT_FLOAT_EQ(helm_wheel_rad(0.0f), 0.0f);
+    EXPECT_GT(helm_wheel_rad(0.5f), 0.0f);  // left: anticlockwise as the helmsman sees it
+    EXPECT_FLOAT_EQ(helm_wheel_rad(-0.5f), -helm_wheel_rad(0.5f));
+    EXPECT_FLOAT_EQ(helm_wheel_rad(1.0f), kHelmLockRad);
+    EXPECT_GT(kHelmLockRad, 1.5f);  // a boat's wheel turns further than a car's road wheels
+    float last = helm_wheel_rad(-1.0f);
+    for (float s = -0.9f; s <= 1.0f; s += 0.1f) {
+        EXPECT_GT(helm_wheel_rad(s), last) << s;
+        last = helm_wheel_rad(s);
+    }
+    EXPECT_FLOAT_EQ(helm_wheel_rad(3.0f), kHelmLockRad);  // no further than full helm
+}
+
+TEST(CabinInstruments, HelmAxisPointsBackAndUpAtTheHelmsman) {
+    glm::vec3 a = helm_axis();
+    EXPECT_NEAR(a.x * a.x + a.y * a.y + a.z * a.z, 1.0f, 1e-5f);
+    EXPECT_LT(a.x, 0.0f);
+    EXPECT_GT(a.y, 0.0f);
+    EXPECT_FLOAT_EQ(a.z, 0.0f);
+}
+
 }  // namespace

@@ -33,6 +33,14 @@ TEST(FramePoses, EndsAreTheTwoTicksAndTheMiddleIsBetween) {
     EXPECT_FLOAT_EQ(m.camera.target.x, 0.25f);
 }
 
+TEST(FramePoses, TheBoatsHelmTurnsSmoothlyBetweenTicks) {
+    auto a = poses_at({0, 0, 0}, 0.0f, {0, 2, 5});
+    auto b = a;
+    b.boat_steer = 1.0f;
+    EXPECT_FLOAT_EQ(effects::interpolate(a, b, 0.25f).boat_steer, 0.25f);
+    EXPECT_FLOAT_EQ(effects::interpolate(a, b, 1.0f).boat_steer, 1.0f);
+}
+
 TEST(FramePoses, HeadingsTakeTheShortWayRound) {
     const float pi = 3.14159265f;
     const auto a = poses_at({0, 0, 0}, pi - 0.1f, {0, 2, 5});

@@ -28,11 +28,11 @@ const Material glass{"glass", {0.035f, 0.05f, 0.065f, 1}, 0.0f, 0.05f};
 const Material tyre{"tyre", {0.018f, 0.018f, 0.02f, 1}, 0.0f, 0.9f};
 const Material chrome{"chrome", {0.6f, 0.6f, 0.62f, 1}, 0.9f, 0.25f};
 const Material trim{"trim", {0.03f, 0.03f, 0.032f, 1}, 0.1f, 0.6f};
-// The cabin's lining: under the roof it sees no sky, so the scene's sky ambient leaves it
-// black; its emission stands in for the daylight coming in through the glass.
-const Material headliner{"headliner", {0.8f, 0.78f, 0.74f, 1}, 0.0f, 0.95f, {0.11f, 0.105f, 0.1f}};
-const Material sun_visor{"sun_visor", {0.6f, 0.58f, 0.55f, 1}, 0.0f, 0.9f, {0.075f, 0.072f, 0.068f}};
-const Material pillar_lining{"pillar_lining", {0.42f, 0.41f, 0.39f, 1}, 0.0f, 0.9f, {0.05f, 0.048f, 0.046f}};
+// The cabin's lining: under the roof it sees the sky only through the glass, and the
+// renderer lights it so (its meshes "headliner", "sun_visors" and "pillars").
+const Material headliner{"headliner", {0.8f, 0.78f, 0.74f, 1}, 0.0f, 0.95f};
+const Material sun_visor{"sun_visor", {0.6f, 0.58f, 0.55f, 1}, 0.0f, 0.9f};
+const Material pillar_lining{"pillar_lining", {0.42f, 0.41f, 0.39f, 1}, 0.0f, 0.9f};
 const Material dashboard{"dashboard", {0.045f, 0.045f, 0.05f, 1}, 0.0f, 0.8f};
 const Material instrument{"instrument", {0.85f, 0.85f, 0.82f, 1}, 0.0f, 0.5f};  // colours in COLOR_0
 const Material needle{"needle", {0.9f, 0.25f, 0.03f, 1}, 0.0f, 0.4f, {0.12f, 0.03f, 0.0f}};  // lit from within

@@ -16,6 +16,10 @@ float steering_wheel_rad(float front_wheel_rad) { return front_wheel_rad * kStee
 
 float wiper_stalk_rad(sim::WiperMode mode) { return -0.14f * float(static_cast<int>(mode)); }
 
+float helm_wheel_rad(float steer) { return std::clamp(steer, -1.0f, 1.0f) * kHelmLockRad; }
+
 glm::vec3 column_axis() { return {-std::cos(kColumnTiltRad), std::sin(kColumnTiltRad), 0.0f}; }
+
+glm::vec3 helm_axis() { return {-std::cos(kHelmTiltRad), std::sin(kHelmTiltRad), 0.0f}; }
 
 }  // namespace effects::cabin

@@ -40,7 +40,10 @@ FramePoses capture_poses(const sim::World& world) {
         p.car_wheel_spin_rad = car->wheel_spin_rad();
         p.car_speed_mps = car->speed_mps();
     }
-    if (const auto* player = world.find<sim::Player>()) p.wipers = player->wipers();
+    if (const auto* player = world.find<sim::Player>()) {
+        p.wipers = player->wipers();
+        p.boat_steer = player->drive_input(sim::Vehicle::Boat).steer;
+    }
     if (const auto* boat = world.find<sim::Boat>()) p.boat = boat->pose();
     if (const auto* objects = world.find<sim::ThrownObjects>())
         for (const sim::ThrownObject& o : objects->objects())
@@ -61,6 +64,7 @@ FramePoses interpolate(const FramePoses& from, const FramePoses& to, float t) {
     p.car_wheel_spin_rad = lerp_angle(from.car_wheel_spin_rad, to.car_wheel_spin_rad, t);
     p.car_speed_mps = glm::mix(from.car_speed_mps, to.car_speed_mps, t);
     p.boat = lerp_pose(from.boat, to.boat, t);
+    p.boat_steer = glm::mix(from.boat_steer, to.boat_steer, t);
     for (size_t i = 0; i < p.objects.size() && i < from.objects.size(); ++i)
         if (from.objects[i].age_ticks + 1 == to.objects[i].age_ticks)
             p.objects[i].position = glm::mix(from.objects[i].position, to.objects[i].position, t);

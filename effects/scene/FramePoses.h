@@ -22,6 +22,7 @@ struct FramePoses {
     sim::Pose car, boat;
     float car_steer_rad = 0.0f, car_wheel_spin_rad = 0.0f, car_speed_mps = 0.0f;
     sim::WiperMode wipers = sim::WiperMode::Off;
+    float boat_steer = 0.0f;  // the boat's steering input: its helm wheel turns with it
     struct Object {
         glm::vec3 position{0.0f};
         float radius_m = 0.0f;

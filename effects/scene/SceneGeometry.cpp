@@ -79,7 +79,7 @@ void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
 }
 
 void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const FramePoses& poses, Use use,
-                         const Frustum& view, const Select& select) const {
+                         const Frustum& view, const Select& select, Car car) const {
     const bool depth_only = use != Use::Shading;
     auto kept = [&](glm::vec3 lo, glm::vec3 hi) { return !view.outside(lo, hi) && (!select || select(lo, hi)); };
     auto material = [&](glm::vec4 tint) {
@@ -87,7 +87,7 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     };
     p.use();
     material(glm::vec4(1.0f));
-    if (use != Use::StillShadowCasters) draw_moving(p, poses, depth_only, view, select);
+    if (use != Use::StillShadowCasters) draw_moving(p, poses, depth_only, view, select, car);
     if (use == Use::MovingShadowCasters) return;
     material(glm::vec4(1.0f));
     for (size_t i = 0; i < desc_.props.size(); ++i) {
@@ -106,7 +106,7 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
 }
 
 void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, bool depth_only,
-                                const Frustum& view, const Select& select) const {
+                                const Frustum& view, const Select& select, Car car) const {
     auto selected = [&](const Model& m, const glm::mat4& transform) {
         if (!select) return true;
         const auto [lo, hi] = world_box(m, transform);
@@ -115,7 +115,11 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
     auto material = [&](glm::vec4 tint) {
         if (!depth_only) p.set("u_tint", tint);
     };
-    if (desc_.car_model >= 0 && selected(desc_.models[size_t(desc_.car_model)], poses.car.matrix())) {
+    // The cabin's lining sees the sky only through the glass: mesh.frag.glsl's u_cabin_lining.
+    auto lining = [&](const std::string& mesh) {
+        if (!depth_only) p.set("u_cabin_lining", mesh == "headliner" || mesh == "sun_visors" || mesh == "pillars" ? 1.0f : 0.0f);
+    };
+    if (desc_.car_model >= 0 && car == Car::Drawn && selected(desc_.models[size_t(desc_.car_model)], poses.car.matrix())) {
         // Wheels and hubcaps (meshes "wheel_fl", "hubcap_rr", ...) turn
         // about their axle (model z) and the front ones steer about their vertical. In the
         // cabin the needle turns about the dial's centre and the wiper stalk about the
@@ -126,6 +130,7 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
         };
         glm::vec3 dial_centre(0.0f), wheel_centre(0.0f);
         models_[size_t(desc_.car_model)]->draw_parts(p, depth_only, [&](const std::string& mesh, glm::vec3 centre) {
+            lining(mesh);
             if (mesh == "speedo_dial") dial_centre = centre;
             if (mesh == "steering_wheel") wheel_centre = centre;
             if (mesh == "speedo_needle")
@@ -142,10 +147,17 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
             m = glm::rotate(m, -poses.car_wheel_spin_rad, glm::vec3(0.0f, 0.0f, 1.0f));  // rolling forward
             place(p, glm::translate(m, -centre), depth_only);
         });
+        lining("");
     }
     if (desc_.boat_model >= 0 && selected(desc_.models[size_t(desc_.boat_model)], poses.boat.matrix())) {
-        place(p, poses.boat.matrix(), depth_only);
-        models_[size_t(desc_.boat_model)]->draw(p, depth_only);
+        // The helm's wheel turns about its hub with the steering.
+        const glm::mat4 hull = poses.boat.matrix();
+        models_[size_t(desc_.boat_model)]->draw_parts(p, depth_only, [&](const std::string& mesh, glm::vec3 centre) {
+            if (mesh != "helm_wheel") return place(p, hull, depth_only);
+            const glm::mat4 m = glm::rotate(glm::translate(hull, centre), cabin::helm_wheel_rad(poses.boat_steer),
+                                            cabin::helm_axis());
+            place(p, glm::translate(m, -centre), depth_only);
+        });
     }
     for (const FramePoses::Object& o : poses.objects) {
         const glm::vec3 lo = o.position - o.radius_m, hi = o.position + o.radius_m;

@@ -27,11 +27,14 @@ public:
     // Which world-space boxes a draw keeps (a vehicle is one box, the ground a box per
     // tile): all when empty.
     using Select = std::function<bool(glm::vec3 lo, glm::vec3 hi)>;
+    // Whether the car is drawn: the rear-view mirror (MirrorPass) looks out of it.
+    enum class Car { Drawn, LeftOut };
     // What `view` can see (and `select` keeps), nearest kinds first (the vehicles, thrown
     // objects, props, then the ground) so that the early depth test spares hidden pixels
-    // their shading.
+    // their shading. Shading the car, sets u_cabin_lining per mesh (mesh.frag.glsl) and
+    // leaves it 0.
     void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
-              const Frustum& view, const Select& select = {}) const;
+              const Frustum& view, const Select& select = {}, Car car = Car::Drawn) const;
     // The level's props alone: what stays put, for the top-down sky occlusion.
     void draw_props(const gl::Program& program, bool depth_only) const;
     // World-space bounds of the props (min = max = 0 without any).
@@ -47,7 +50,7 @@ public:
 private:
     // The car, the boat and the thrown objects.
     void draw_moving(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view,
-                     const Select& select) const;
+                     const Select& select, Car car) const;
     // The objectives' gates and targets: they change with the tick, so they cast their
     // shadows with what moves.
     void draw_markers(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/vec4.hpp>
 
 namespace effects {
@@ -80,6 +81,20 @@ void SceneLighting::set_weather(const WeatherLook& look) {
     sky.overcast = look.overcast;
 }
 
+glm::vec3 SceneLighting::cabin_daylight() const {
+    // The sky as common/sky.glsl has it, halfway up from the horizon (where the glass
+    // is): blue when clear, the cloud deck's grey under cloud.
+    const glm::vec3 clear_sky(0.30f, 0.44f, 0.70f), cloud(0.34f, 0.36f, 0.38f);
+    const glm::vec3 sky_light = glm::mix(clear_sky, cloud, sky.overcast) * sky.sky_intensity;
+    // A bounce off grey seats and a grey floor greys it too.
+    const float grey = 0.2126f * sky_light.x + 0.7152f * sky_light.y + 0.0722f * sky_light.z;
+    const glm::vec3 bounced_sky = glm::mix(glm::vec3(grey), sky_light, 0.25f);
+    // The roof keeps a high sun out: what comes in goes with the cosine of its height.
+    const float low_sun = std::sqrt(std::max(0.0f, 1.0f - sky.sun_dir.y * sky.sun_dir.y));
+    constexpr float kSkyThroughGlass = 0.30f, kSunThroughGlass = 0.03f;
+    return kSkyThroughGlass * bounced_sky + kSunThroughGlass * low_sun * sky.sun_radiance;
+}
+
 void SceneLighting::apply_sky(const gl::Program& p) const {
     p.set("u_sun_dir", sky.sun_dir);
     p.set("u_sun_radiance", sky.sun_radiance);
@@ -98,6 +113,7 @@ void SceneLighting::apply(const gl::Program& p) const {
     p.set("u_shadow_map", int(kShadowUnit));
     p.set("u_sky_matrix", bias * sky_view_proj);
     p.set("u_sky_map", int(kSkyUnit));
+    p.set("u_cabin_daylight", cabin_daylight());
     env_cube.bind(kEnvUnit);
     shadow_map.bind(kShadowUnit);
     sky_map.bind(kSkyUnit);

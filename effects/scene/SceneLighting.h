@@ -64,6 +64,11 @@ public:
     glm::mat4 sky_view_proj{1.0f};
     gl::Texture sky_map;
     float env_max_lod() const { return float(env_levels_ - 1); }
+    // The irradiance in a car's cabin under its roof (over pi: a lining's albedo times it
+    // is its radiance), which sees the sky and the sun only through the glass: the sky's
+    // light that the windows let in and the sun's when it is low enough to come through
+    // them, both passed on by the seats and the dashboard. Cloud darkens both.
+    glm::vec3 cabin_daylight() const;
     // A new shadow map of `size` texels on a side (nothing drawn in it yet).
     void resize_shadow_map(int size);
     // The line lights of the frame (none unless set; beyond kMaxLineLights ignored).

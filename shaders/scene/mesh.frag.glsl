@@ -10,7 +10,12 @@ uniform vec3 u_eye;
 uniform vec4 u_tint;  // multiplies the vertex colour (thrown objects' colours)
 uniform float u_roughness;
 uniform float u_metallic;
-uniform vec3 u_emissive;  // the material's own light: a cabin lining lit by the light coming in
+uniform vec3 u_emissive;  // the material's own light (a lamp, the speedometer's needle)
+// The car's cabin lining (SceneGeometry: 1 for its meshes, else 0) sees the sky only
+// through the glass: the roof's shadow and the sky occlusion would leave it black, so it
+// takes the daylight the glass lets in (SceneLighting::cabin_daylight) instead.
+uniform float u_cabin_lining;
+uniform vec3 u_cabin_daylight;
 
 // GROUND (a variant of the program): the terrain, coloured here as roads (rectangles
 // in xz, ROAD_COUNT of them), grass, the quay's concrete and the sea bed; otherwise the
@@ -91,7 +96,8 @@ void main() {
     base *= 1.0 - 0.5 * u_wetness;
     roughness = mix(roughness, wet_roughness, u_wetness);
 #endif
-    vec3 c = shade_surface(base, roughness, u_metallic, v_world_pos, n, u_eye) + u_emissive;
+    vec3 c = shade_surface(base, roughness, u_metallic, v_world_pos, n, u_eye) + u_emissive +
+             base * (1.0 - u_metallic) * (u_cabin_lining * u_cabin_daylight);
     o_colour = vec4(apply_fog(c, v_world_pos, u_eye), 1.0);
     o_normal = vec4(n, 1.0);
 }
