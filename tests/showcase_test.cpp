@@ -5,6 +5,7 @@
 // the camera turned round must change under 1%: the measure sees the effect, not
 // noise. Set SPINDRIFT_SHOWCASE_PNG_DIR to write the two frames of each as PNGs.
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -95,6 +96,8 @@ protected:
     }
 
     static void expect_showcase(const Shares& s) {
+        std::printf("the effect changes %.1f%% of the frame, %.2f%% turned away\n", 100.0 * s.scripted,
+                    100.0 * s.turned_away);
         EXPECT_GE(s.scripted, kShowcaseShare) << "the effect changes " << 100.0 * s.scripted << "% of the frame";
         EXPECT_LT(s.turned_away, kTurnedAwayShare)
             << "turned away from the effect, " << 100.0 * s.turned_away << "% of the frame still changes";
