@@ -8,7 +8,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <bit>
 #include <chrono>
+#include <limits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -47,6 +49,21 @@ protected:
     fs::path dir_;
 };
 
+// A look, an orbit and a follow shot.
+std::vector<game::CameraShot> test_camera_shots() {
+    game::CameraShot look{.tick = 100, .kind = game::CameraShotKind::Look, .point = {10.0f, 3.0f, -20.0f},
+                          .target = {0.0f, 1.5f, -30.0f}, .fov_deg = 40.0f};
+    game::CameraShot orbit{.tick = 200, .kind = game::CameraShotKind::Orbit, .point = {0.0f, 1.0f, -30.0f},
+                           .radius_m = 8.0f, .height_m = 3.0f, .deg_per_s = -20.0f, .start_deg = 90.0f};
+    game::CameraShot follow{.tick = 300};
+    return {look, orbit, follow};
+}
+
+// Where the header's camera shot count is (the first shot follows it), from the documented layout.
+size_t camera_shots_offset(const game::ReplayHeader& h) {
+    return 16 + 4 + h.level_id.size() + 8 + 8 + 4 + 8 + 4 + 4 + 4 + 4 * h.checkpoints.size();
+}
+
 game::ReplayHeader test_header(size_t subsystems = 3) {
     game::ReplayHeader h;
     h.level_id = "harbour";
@@ -57,6 +74,7 @@ game::ReplayHeader test_header(size_t subsystems = 3) {
     h.frame_width = 320;
     h.frame_height = 180;
     h.checkpoints = {90, 300, 600};
+    h.camera_shots = test_camera_shots();
     const char* names[] = {"vehicles", "water", "rain", "fluid", "dust"};
     for (size_t i = 0; i < subsystems; ++i) h.subsystem_names.push_back(names[i]);
     h.sim_params = R"({"gravity_mps2": 9.81})";
@@ -179,6 +197,12 @@ TEST_F(ReplayFile, RoundTripsAHeaderAtEveryLimit) {
     h.level_id = std::string(64, 'L');
     h.checkpoints.clear();
     for (uint32_t i = 0; i < 1024; ++i) h.checkpoints.push_back(i * 3);
+    h.camera_shots.clear();
+    for (uint32_t i = 0; i < 1024; ++i) {
+        game::CameraShot shot = test_camera_shots()[i % 3];
+        shot.tick = i;
+        h.camera_shots.push_back(shot);
+    }
     h.subsystem_names.clear();
     for (int i = 0; i < 32; ++i) h.subsystem_names.push_back(std::string(31, 'a') + char('A' + i % 26));
     h.sim_params = std::string(64 << 10, 'p');
@@ -317,9 +341,12 @@ TEST_F(ReplayFile, RefusesWrongMagicVersionAndTrailingBytes) {
     b = full;
     set_u32(b, 8, 2);  // the format before analog inputs
     expect_replay_error([&] { parse(b); },
-                        {"test.replay", "is replay format version 2", "reads version 3", "re-record it"});
-    set_u32(b, 8, 4);  // a newer build's
-    expect_replay_error([&] { parse(b); }, {"is replay format version 4", "reads version 3"});
+                        {"test.replay", "is replay format version 2", "reads version 4", "re-record it"});
+    set_u32(b, 8, 3);  // the format before the camera shots
+    expect_replay_error([&] { parse(b); },
+                        {"test.replay", "is replay format version 3", "reads version 4", "re-record it from its .script"});
+    set_u32(b, 8, 5);  // a newer build's
+    expect_replay_error([&] { parse(b); }, {"is replay format version 5", "reads version 4"});
     b = full;
     b.insert(b.end(), {1, 2, 3, 4, 5});
     expect_replay_error([&] { parse(b); }, {"test.replay", "trailing garbage after the end record (5 bytes)"});
@@ -330,6 +357,47 @@ TEST_F(ReplayFile, RefusesWrongMagicVersionAndTrailingBytes) {
     const size_t h = header_size(b);
     std::memcpy(&b[h], "XHNK", 4);
     expect_replay_error([&] { parse(b); }, {"unexpected bytes at offset " + std::to_string(h), "not a chunk"});
+}
+
+// A forged camera shot that passes the header's CRC is still refused, field by field.
+TEST_F(ReplayFile, RefusesCameraShotsItCannotShow) {
+    write_replay(file("k.replay"), 61);
+    const Bytes full = read_bytes(file("k.replay"));
+    const size_t h = header_size(full);
+    const size_t count_at = camera_shots_offset(test_header());
+    ASSERT_EQ(get_u32(full, count_at), 3u);
+    const size_t look_at = count_at + 4, orbit_at = look_at + game::kCameraShotBytes;
+    auto forged = [&](size_t at, uint32_t value) {
+        Bytes b = full;
+        set_u32(b, at, value);
+        fix_crc(b, 0, h - 4);
+        return b;
+    };
+    auto f32 = [](float v) { return std::bit_cast<uint32_t>(v); };
+    const struct {
+        size_t at;
+        uint32_t value;
+        std::string says;
+    } cases[] = {
+        {count_at, 1025, "'camera_shots' counts 1025"},
+        {count_at, 1000, "runs past the end of the header"},
+        {orbit_at, 100, "camera shots are not in ascending tick order (100 follows 100)"},
+        {look_at, 864000, "camera shot tick 864000 is beyond"},
+        {look_at + 5, f32(std::numeric_limits<float>::quiet_NaN()), "not a finite number"},
+        {look_at + 5, f32(std::numeric_limits<float>::infinity()), "not a finite number"},
+        {look_at + 5 + 4 * 10, f32(0.0f), "field of view"},  // the look's fov
+        {look_at + 5 + 4 * 4, f32(99999.0f), "straight up or down"},  // the look's target high above its eye
+        {orbit_at + 5 + 4 * 6, f32(-1.0f), "orbit radius"},
+        {orbit_at + 5 + 4 * 8, f32(1e6f), "faster than 3600"},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.says);
+        expect_replay_error([&] { parse(forged(c.at, c.value)); }, {"test.replay", c.says});
+    }
+    Bytes kind = full;
+    kind[look_at + 4] = 7;
+    fix_crc(kind, 0, h - 4);
+    expect_replay_error([&] { parse(kind); }, {"camera shot at tick 100", "unknown camera kind 7"});
 }
 
 TEST_F(ReplayFile, RefusesStructuralLiesThatPassTheCrc) {

@@ -120,7 +120,7 @@ TEST(InputScript, NamesTheLineOfEachError) {
     expect_script_error("0 hold\n-5 hold\n20 end", 2, {"tick -5 is negative"});
     expect_script_error("864001 end", 1, {"tick 864001 is above the limit 864000"});
     expect_script_error("0 hold\n99999999999999999999999 end", 2, {"above the limit 864000"});
-    expect_script_error("0 hold\n10 press throttle\n20 end", 2, {"unknown action 'press'", "hold, tap or end"});
+    expect_script_error("0 hold\n10 press throttle\n20 end", 2, {"unknown action 'press'", "hold, tap, camera or end"});
     expect_script_error("0 hold\n10\n20 end", 2, {"tick 10 needs an action"});
     expect_script_error("10 tap\n20 end", 1, {"'tap' needs at least one control"});
     expect_script_error("0 hold\n5 hold brake\n", 2, {"no 'end' line"});
@@ -161,6 +161,63 @@ TEST(InputScript, ChecksCheckpointsFramesAndDuplicates) {
     const game::InputScript s = game::parse_script("frames 16x4096\ncheckpoints 0 863999\n864000 end", "max.script");
     EXPECT_EQ(s.inputs.size(), 864000u);
     EXPECT_EQ(s.frame_height, 4096u);
+}
+
+TEST(InputScript, CameraLinesPlaceTheCameraFromTheirTickAndLeaveTheInputAlone) {
+    const game::InputScript s = game::parse_script(
+        "0 hold throttle\n"
+        "100 camera look 10 3 -20  0 1.5 -30 fov=40\n"
+        "100 hold brake\n"
+        "200 camera orbit 0 1 -30  8 3 -20 from=90\n"
+        "300 camera follow\n"
+        "400 end\n",
+        "cameras.script");
+    ASSERT_EQ(s.camera_shots.size(), 3u);
+    game::CameraShot look;
+    look.tick = 100;
+    look.kind = game::CameraShotKind::Look;
+    look.point = {10.0f, 3.0f, -20.0f};
+    look.target = {0.0f, 1.5f, -30.0f};
+    look.fov_deg = 40.0f;
+    EXPECT_EQ(s.camera_shots[0], look);
+    game::CameraShot orbit;
+    orbit.tick = 200;
+    orbit.kind = game::CameraShotKind::Orbit;
+    orbit.point = {0.0f, 1.0f, -30.0f};
+    orbit.radius_m = 8.0f;
+    orbit.height_m = 3.0f;
+    orbit.deg_per_s = -20.0f;
+    orbit.start_deg = 90.0f;
+    EXPECT_EQ(s.camera_shots[1], orbit);
+    EXPECT_EQ(s.camera_shots[2].kind, game::CameraShotKind::Follow);
+    EXPECT_EQ(s.camera_shots[2].tick, 300u);
+    // The camera is not input: the held controls are what the hold lines say.
+    ASSERT_EQ(s.inputs.size(), 400u);
+    EXPECT_EQ(s.inputs[99].held, bits({Control::Throttle}));
+    EXPECT_EQ(s.inputs[100].held, bits({Control::Brake}));
+    EXPECT_EQ(s.inputs[399].held, bits({Control::Brake}));
+}
+
+TEST(InputScript, NamesTheLineOfEachCameraError) {
+    expect_script_error("10 camera\n20 end", 1, {"a camera line is", "camera look", "camera orbit", "camera follow"});
+    expect_script_error("10 camera pan 1 2 3\n20 end", 1, {"a camera line is"});
+    expect_script_error("10 camera look 1 2 3 4 5\n20 end", 1, {"'camera look' needs 6 numbers"});
+    expect_script_error("10 camera look 1 2 3 4 5 x\n20 end", 1, {"'x' is not a number", "target z"});
+    expect_script_error("10 camera look 1 2 3 1 2 3\n20 end", 1, {"eye and target are the same point"});
+    expect_script_error("10 camera look 1 2 3 1 9 3\n20 end", 1, {"straight up or down"});
+    expect_script_error("10 camera look 1 2 3 4 5 6 fov=200\n20 end", 1, {"field of view", "5..120"});
+    expect_script_error("10 camera look 1 2 3 4 5 6 fov=40 fov=50\n20 end", 1, {"unexpected 'fov=50'"});
+    expect_script_error("10 camera look 1 2 3 4 5 6 from=40\n20 end", 1, {"unexpected 'from=40'"});
+    expect_script_error("10 camera look 1 2 3 4 5 6 fov=\n20 end", 1, {"'' is not a number", "field of view"});
+    expect_script_error("10 camera look 1 2 3 4 5 999999\n20 end", 1, {"100 km"});
+    expect_script_error("10 camera orbit 0 0 0 0 2 10\n20 end", 1, {"orbit radius", "0.1..10000"});
+    expect_script_error("10 camera orbit 0 0 0 5 2 9000\n20 end", 1, {"faster than 3600"});
+    expect_script_error("10 camera orbit 0 0 0 5 2 10 from=400\n20 end", 1, {"start angle"});
+    expect_script_error("10 camera orbit 0 0 0 0.1 50 10\n20 end", 1, {"straight up or down"});
+    expect_script_error("10 camera follow now\n20 end", 1, {"unexpected 'now'"});
+    expect_script_error("10 camera follow\n10 camera look 1 2 3 4 5 6\n20 end", 2, {"already has a camera line"});
+    expect_script_error("10 camera follow\n5 hold\n20 end", 2, {"tick 5 is before the previous tick 10"});
+    expect_script_error("0 hold\n20 camera follow\n20 end", 3, {"ends at tick 20"});
 }
 
 class InputScriptFile : public ::testing::Test {

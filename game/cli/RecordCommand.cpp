@@ -36,6 +36,7 @@ int record_command(const std::vector<std::string>& argv) {
         return kExitBadInput;
     }
     ReplayHeader header = replay_header_for(session, script.frame_width, script.frame_height, script.checkpoints);
+    header.camera_shots = script.camera_shots;
 
     ReplayWriter writer = ReplayWriter::create(*out, header);
     Progress progress("record " + std::filesystem::path(*out).filename().string(), script.inputs.size(), "ticks");

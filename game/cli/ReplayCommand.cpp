@@ -19,6 +19,7 @@
 #include "game/level/LevelMemory.h"
 #include "game/platform/HeadlessContext.h"
 #include "game/play/PlayMode.h"
+#include "game/replay/CameraTrack.h"
 #include "game/replay/FrameSelection.h"
 #include "game/replay/ObjectiveSummary.h"
 #include "game/replay/ReplayCheck.h"
@@ -102,6 +103,7 @@ int replay_command(const std::vector<std::string>& argv) {
         capture = std::make_unique<FrameCapture>(int(header.frame_width), int(header.frame_height));
     }
 
+    const CameraTrack cameras(header.camera_shots, header.tick_rate_hz);
     ReplayChecker checker(replay);
     std::vector<FrameOutcome> outcomes;
     size_t missing_goldens = 0;
@@ -116,7 +118,9 @@ int replay_command(const std::vector<std::string>& argv) {
         progress.update(tick);
         if (!frames.wants(tick, checkpoints)) continue;
 
-        renderer->render(world, capture->output());
+        effects::FramePoses poses = effects::capture_poses(world);
+        poses.camera = cameras.view_at(tick, poses.camera);
+        renderer->render(world, capture->output(), poses);
         ImageRGBA8 image = capture->read();
         if (args.value("--out")) {
             write_png(out_dir / frame_name(tick, ".png"), image);

@@ -72,7 +72,7 @@ void PlayLoop::set_quality(QualityChoice quality) {
 
 void PlayLoop::run(const LoopHooks& hooks) {
     sim::World& world = *session_.world;
-    previous_poses_ = effects::capture_poses(world);
+    previous_poses_ = poses_now(world);
     FixedStepClock clock(sim::kTickRateHz);
     const bool keyboard_drives = !hooks.next_input;
     bool input_ended = false;
@@ -123,7 +123,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
                     break;
                 }
                 const sim::TickInput applied = sim::quantise(*input);
-                previous_poses_ = effects::capture_poses(world);
+                previous_poses_ = poses_now(world);
                 world.step(applied);
                 hooks.after_tick(world, applied);
                 ++record.ticks;
@@ -201,8 +201,10 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     // `alpha` is how far real time is past the world's last tick, in ticks [0, 1): what
     // moves is drawn that far between its last two ticks, so motion is smooth at any
     // frame rate (and a tick behind: the price of never guessing ahead).
-    const effects::FramePoses poses =
-        effects::interpolate(previous_poses_, effects::capture_poses(world), float(alpha));
+    const effects::FramePoses now = poses_now(world);
+    effects::FramePoses poses = effects::interpolate(previous_poses_, now, float(alpha));
+    // A scripted cut is a jump, not a move: no frame sweeps between the two views.
+    if (world.tick() > 0 && options_.cameras.cuts_between(world.tick() - 1, world.tick())) poses.camera = now.camera;
     renderer_.render(world, effects::RenderOutput{screen_.framebuffer(), size.width, size.height}, poses);
 
     // The UI goes on top of the finished frame at the output's size.
@@ -239,6 +241,12 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
         screenshot_wanted_ = false;
         take_screenshot(size);
     }
+}
+
+effects::FramePoses PlayLoop::poses_now(const sim::World& world) const {
+    effects::FramePoses poses = effects::capture_poses(world);
+    poses.camera = options_.cameras.view_at(world.tick(), poses.camera);
+    return poses;
 }
 
 void PlayLoop::take_screenshot(Screen::Size size) {

@@ -16,6 +16,7 @@
 #include "game/play/QualityChoice.h"
 #include "game/play/ResolutionController.h"
 #include "game/play/Screen.h"
+#include "game/replay/CameraTrack.h"
 #include "game/session/GameSession.h"
 
 namespace game {
@@ -51,6 +52,8 @@ struct LoopOptions {
     bool pause_when_unfocused = true;
     // Stop once the input has run out (timedemo); otherwise the last frame stays up.
     bool end_with_input = false;
+    // A replay's scripted cameras (none: the player's camera throughout).
+    CameraTrack cameras;
 };
 
 class PlayLoop {
@@ -86,6 +89,8 @@ private:
     // ticks (all zero without a gamepad). Returns whether a button went down.
     bool read_gamepad(bool keyboard_drives, sim::TickInput& axes);
     void draw_frame(const LoopHooks& hooks, Screen::Size size, double alpha);
+    // The world's moving things now, seen from where the scripted cameras put the eye.
+    effects::FramePoses poses_now(const sim::World& world) const;
     void take_screenshot(Screen::Size size);
 
     GameSession& session_;

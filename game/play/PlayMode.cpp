@@ -58,7 +58,9 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
 
 int play_replay_in_window(const Replay& replay, GameSession& session, QualityChoice quality) {
     WindowScreen screen(Window::Options{1280, 720, "Spindrift - replay", true});
-    PlayLoop loop(session, screen, LoopOptions{.quality = quality});
+    PlayLoop loop(session, screen,
+                  LoopOptions{.quality = quality,
+                              .cameras = CameraTrack(replay.header.camera_shots, replay.header.tick_rate_hz)});
     ReplayChecker checker(replay);
     std::optional<Divergence> divergence;
     size_t next = 0;

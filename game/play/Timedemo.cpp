@@ -28,7 +28,11 @@ TimedemoRun run_timedemo(const Replay& replay, const std::string& replay_name, G
     if (const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER))) run.renderer = text;
     run.fill_ms = trivial_fill_ms(size.width, size.height);
 
-    PlayLoop loop(session, screen, LoopOptions{.quality = quality, .pause_when_unfocused = false, .end_with_input = true});
+    PlayLoop loop(session, screen,
+                  LoopOptions{.quality = quality,
+                              .pause_when_unfocused = false,
+                              .end_with_input = true,
+                              .cameras = CameraTrack(replay.header.camera_shots, replay.header.tick_rate_hz)});
     ReplayChecker checker(replay);
     size_t next = 0;
     std::map<std::string, size_t> pass_index;

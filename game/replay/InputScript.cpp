@@ -90,7 +90,7 @@ private:
         if (head == "checkpoints") return parse_checkpoints(words);
         if (head[0] == '-' || (head[0] >= '0' && head[0] <= '9')) return parse_tick_line(words);
         fail("unknown directive '" + std::string(head) +
-             "' (expected level, frames, checkpoints, or a tick number followed by hold, tap or end)");
+             "' (expected level, frames, checkpoints, or a tick number followed by hold, tap, camera or end)");
     }
 
     void once(int& seen_line, const char* directive) {
@@ -205,12 +205,13 @@ private:
         if (have_tick_ && tick < last_tick_)
             fail("tick " + to_string(tick) + " is before the previous tick " + to_string(last_tick_) +
                  ": ticks must not go back");
-        if (words.size() < 2) fail("tick " + to_string(tick) + " needs an action: hold, tap or end");
+        if (words.size() < 2) fail("tick " + to_string(tick) + " needs an action: hold, tap, camera or end");
         const std::string_view action = words[1];
         if (action == "end") return parse_end(tick, words);
+        if (action == "camera") return parse_camera(tick, words);
         if (action != "hold" && action != "tap")
             fail("unknown action '" + std::string(action) + "' at tick " + to_string(tick) +
-                 " (expected hold, tap or end)");
+                 " (expected hold, tap, camera or end)");
         const bool hold = action == "hold";
         if (!hold && words.size() < 3) fail("'tap' needs at least one control to tap");
         if (hold)
@@ -221,6 +222,87 @@ private:
         ScriptEvent event{tick, hold, {}, 0, line_};
         parse_controls(words, event);
         events_.push_back(event);
+        have_tick_ = true;
+        last_tick_ = tick;
+    }
+
+    // A camera value: a decimal number.
+    float parse_camera_number(std::string_view word, const char* what) const {
+        float value = 0.0f;
+        const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value,
+                                                  std::chars_format::fixed);
+        if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(value)) {
+            // Appended piecewise: "'" + std::string(...) trips a false -Wrestrict in GCC 12.
+            std::string message(1, '\'');
+            message.append(word).append("' is not a number (the camera's ").append(what).append(")");
+            fail(message);
+        }
+        return value;
+    }
+
+    //   T camera look EX EY EZ  TX TY TZ [fov=DEG]
+    //   T camera orbit CX CY CZ  RADIUS HEIGHT DEG_PER_S [from=DEG] [fov=DEG]
+    //   T camera follow
+    void parse_camera(uint32_t tick, const std::vector<std::string_view>& words) {
+        static constexpr const char* kForms =
+            "'camera look EX EY EZ TX TY TZ [fov=DEG]', 'camera orbit CX CY CZ RADIUS HEIGHT DEG_PER_S "
+            "[from=DEG] [fov=DEG]' or 'camera follow'";
+        if (!script_.camera_shots.empty() && script_.camera_shots.back().tick == tick)
+            fail("tick " + to_string(tick) + " already has a camera line: one camera per tick");
+        if (script_.camera_shots.size() >= kMaxCameraShots)
+            fail("more than " + to_string(kMaxCameraShots) + " camera lines");
+        const std::string_view kind = words.size() > 2 ? words[2] : std::string_view{};
+        CameraShot shot;
+        shot.tick = tick;
+        size_t numbers = 0;
+        const char* const* names = nullptr;
+        static constexpr const char* kLookNames[] = {"eye x", "eye y", "eye z", "target x", "target y", "target z"};
+        static constexpr const char* kOrbitNames[] = {"centre x", "centre y", "centre z",
+                                                      "orbit radius", "height", "degrees a second"};
+        if (kind == "follow") {
+            shot.kind = CameraShotKind::Follow;
+        } else if (kind == "look") {
+            shot.kind = CameraShotKind::Look;
+            numbers = 6;
+            names = kLookNames;
+        } else if (kind == "orbit") {
+            shot.kind = CameraShotKind::Orbit;
+            numbers = 6;
+            names = kOrbitNames;
+        } else {
+            fail("a camera line is " + std::string(kForms));
+        }
+        if (words.size() < 3 + numbers)
+            fail("'camera " + std::string(kind) + "' needs " + to_string(numbers) + " numbers: " + kForms);
+        float v[6] = {};
+        for (size_t i = 0; i < numbers; ++i) v[i] = parse_camera_number(words[3 + i], names[i]);
+        if (shot.kind == CameraShotKind::Look) {
+            shot.point = {v[0], v[1], v[2]};
+            shot.target = {v[3], v[4], v[5]};
+        } else if (shot.kind == CameraShotKind::Orbit) {
+            shot.point = {v[0], v[1], v[2]};
+            shot.radius_m = v[3];
+            shot.height_m = v[4];
+            shot.deg_per_s = v[5];
+        }
+        bool fov_seen = false, from_seen = false;
+        for (size_t i = 3 + numbers; i < words.size(); ++i) {
+            const std::string_view word = words[i];
+            const size_t eq = word.find('=');
+            const std::string_view name = word.substr(0, eq == std::string_view::npos ? word.size() : eq);
+            const std::string_view value = eq == std::string_view::npos ? std::string_view{} : word.substr(eq + 1);
+            if (shot.kind != CameraShotKind::Follow && name == "fov" && !fov_seen) {
+                shot.fov_deg = parse_camera_number(value, "field of view");
+                fov_seen = true;
+            } else if (shot.kind == CameraShotKind::Orbit && name == "from" && !from_seen) {
+                shot.start_deg = parse_camera_number(value, "start angle");
+                from_seen = true;
+            } else {
+                fail("unexpected '" + std::string(word) + "' on a camera line: " + kForms);
+            }
+        }
+        if (std::string problem = camera_shot_problem(shot); !problem.empty()) fail(problem);
+        script_.camera_shots.push_back(shot);
         have_tick_ = true;
         last_tick_ = tick;
     }

@@ -10,6 +10,9 @@
 //   60   hold steer=0.5 throttle=0.8   analog axes (a gamepad): throttle, brake 0..1, steer -1..1 (+ left)
 //   200  tap camera            add 'camera' at tick 200 only, on top of the held set
 //   300  hold                  hold nothing
+//   400  camera look 10 3 -20  0 1 -30 fov=40      from the frame after 400 ticks: eye, target
+//   500  camera orbit 0 1 -30  8 3 20 from=90      circle the point at radius 8 m, 3 m above it, 20 deg/s
+//   600  camera follow         the player's own camera again
 //   900  end                   required, last: simulate ticks 0..899
 #include <cstdint>
 #include <filesystem>
@@ -18,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "game/replay/CameraShot.h"
 #include "game/replay/ReplayFormat.h"
 #include "sim/core/TickInput.h"
 
@@ -33,6 +37,7 @@ struct InputScript {
     std::vector<uint32_t> checkpoints;   // ascending, unique, each < end_tick
     uint32_t end_tick = 0;               // number of ticks to simulate, >= 1
     std::vector<sim::TickInput> inputs;  // expanded: inputs[t] is applied at tick t; size == end_tick
+    std::vector<CameraShot> camera_shots;  // ascending ticks, each < end_tick
 };
 
 // "file:LINE: message", or "file: message" when no line is involved.

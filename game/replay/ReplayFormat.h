@@ -5,6 +5,9 @@
 //            level_id:str level_hash:u64 seed:u64 tick_rate_hz:u32 build_hash:u64
 //            frame_width:u32 frame_height:u32
 //            checkpoint_count:u32 checkpoint:u32[count]
+//            camera_shot_count:u32 camera_shot[count]         (ascending ticks, see CameraShot.h)
+//              tick:u32 kind:u8 point:f32[3] target:f32[3] radius:f32 height:f32
+//              deg_per_s:f32 start_deg:f32 fov_deg:f32       (f32 = IEEE 754 binary32)
 //            subsystem_count:u32 subsystem_name:str[count]
 //            sim_params:str                                   (str = length:u32 + bytes)
 //            crc32 of all the header bytes before it
@@ -20,17 +23,21 @@
 //            The chunk-end world hash is the last world_hash entry: it is not stored twice.
 //   end    : "END!" total_ticks:u32 chunk_count:u32 crc32(tag and these fields)
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "game/replay/CameraShot.h"
+
 namespace game {
 
 inline constexpr std::array<uint8_t, 8> kReplayMagic = {'S', 'P', 'D', 'R', 'I', 'F', 'T', 0x1A};
-// 3: analog throttle, brake and steering beside the held controls (version 2 had the
-// held controls alone; the reader refuses it with a note to re-record).
-inline constexpr uint32_t kReplayVersion = 3;
+// 4: the scripted camera shots in the header (version 3 had none). 3: analog throttle,
+// brake and steering beside the held controls (version 2 had the held controls alone).
+// The reader refuses older versions with a note to re-record them from their scripts.
+inline constexpr uint32_t kReplayVersion = 4;
 
 inline constexpr uint32_t kChunkTicks = 60;        // the writer's chunk length: one second
 inline constexpr uint32_t kMaxChunkTicks = 600;    // the reader accepts chunks up to this length
@@ -39,6 +46,8 @@ inline constexpr uint64_t kMaxReplayFileBytes = 256ull << 20;
 
 inline constexpr size_t kMaxLevelIdBytes = 64;
 inline constexpr size_t kMaxCheckpoints = 1024;
+inline constexpr size_t kMaxCameraShots = 1024;
+inline constexpr size_t kCameraShotBytes = 4 + 1 + 11 * 4;  // tick, kind, 11 floats
 inline constexpr size_t kMaxSubsystems = 32;
 inline constexpr size_t kMaxSubsystemNameBytes = 32;
 inline constexpr size_t kMaxSimParamsBytes = 64u << 10;
@@ -64,9 +73,10 @@ inline constexpr uint8_t part_fingerprint(uint64_t part_hash) { return uint8_t(p
 // Smallest and largest header any valid ReplayHeader encodes to: the reader checks the
 // declared header_size against these before reading further.
 inline constexpr size_t kMinHeaderBytes =
-    kHeaderPrefixBytes + (4 + 1) + 8 + 8 + 4 + 8 + 4 + 4 + 4 + (4 + 4 + 1) + 4 + kCrcBytes;
+    kHeaderPrefixBytes + (4 + 1) + 8 + 8 + 4 + 8 + 4 + 4 + 4 + 4 + (4 + 4 + 1) + 4 + kCrcBytes;
 inline constexpr size_t kMaxHeaderBytes =
     kHeaderPrefixBytes + (4 + kMaxLevelIdBytes) + 8 + 8 + 4 + 8 + 4 + 4 + (4 + 4 * kMaxCheckpoints) +
+    (4 + kCameraShotBytes * kMaxCameraShots) +
     (4 + kMaxSubsystems * (4 + kMaxSubsystemNameBytes)) + (4 + kMaxSimParamsBytes) + kCrcBytes;
 
 struct ReplayHeader {
@@ -77,6 +87,7 @@ struct ReplayHeader {
     uint64_t build_hash = 0;            // sim layout/version hash; a mismatch refuses the replay
     uint32_t frame_width = 480, frame_height = 270;  // checkpoint frame size, each 16..4096
     std::vector<uint32_t> checkpoints;  // ticks whose frames are checked: ascending, unique, <= 1024
+    std::vector<CameraShot> camera_shots;  // the script's cameras: ascending ticks, <= 1024
     std::vector<std::string> subsystem_names;  // order of per-subsystem hashes: 1..32 names of 1..32 bytes
     std::string sim_params;             // opaque text of the sim parameters, <= 64 KiB
 
@@ -107,6 +118,19 @@ inline std::string replay_header_problem(const ReplayHeader& h) {
         if (i > 0 && h.checkpoints[i] <= h.checkpoints[i - 1])
             return "checkpoints are not ascending and unique (" + to_string(h.checkpoints[i]) + " follows " +
                    to_string(h.checkpoints[i - 1]) + ")";
+    }
+    if (h.camera_shots.size() > kMaxCameraShots)
+        return to_string(h.camera_shots.size()) + " camera shots, more than " + to_string(kMaxCameraShots);
+    for (size_t i = 0; i < h.camera_shots.size(); ++i) {
+        const uint32_t tick = h.camera_shots[i].tick;
+        if (tick >= kMaxReplayTicks)
+            return "camera shot tick " + to_string(tick) + " is beyond the " + to_string(kMaxReplayTicks) +
+                   "-tick limit";
+        if (i > 0 && tick <= h.camera_shots[i - 1].tick)
+            return "camera shots are not in ascending tick order (" + to_string(tick) + " follows " +
+                   to_string(h.camera_shots[i - 1].tick) + ")";
+        if (std::string problem = camera_shot_problem(h.camera_shots[i]); !problem.empty())
+            return "camera shot at tick " + to_string(tick) + ": " + problem;
     }
     if (h.subsystem_names.empty() || h.subsystem_names.size() > kMaxSubsystems)
         return to_string(h.subsystem_names.size()) + " subsystem names, expected 1.." +
@@ -139,6 +163,8 @@ inline uint32_t get_u32(const uint8_t* p) {
     return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24);
 }
 inline uint64_t get_u64(const uint8_t* p) { return uint64_t(get_u32(p)) | (uint64_t(get_u32(p + 4)) << 32); }
+inline void put_f32(std::vector<uint8_t>& out, float v) { put_u32(out, std::bit_cast<uint32_t>(v)); }
+inline float get_f32(const uint8_t* p) { return std::bit_cast<float>(get_u32(p)); }
 
 }  // namespace replay_bytes
 }  // namespace game

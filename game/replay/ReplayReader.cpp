@@ -30,7 +30,9 @@ public:
     HeaderCursor(const uint8_t* begin, size_t size, const std::string& name)
         : p_(begin), left_(size), name_(name) {}
 
+    uint8_t u8(const char* field) { return *take(1, field); }
     uint32_t u32(const char* field) { return get_u32(take(4, field)); }
+    float f32(const char* field) { return get_f32(take(4, field)); }
     uint64_t u64(const char* field) { return get_u64(take(8, field)); }
     // A length-prefixed string, its length checked against `max` before it is copied.
     std::string str(const char* field, size_t max) {
@@ -126,6 +128,16 @@ private:
         const uint32_t checkpoint_count = in.count("checkpoints", kMaxCheckpoints);
         h.checkpoints.reserve(checkpoint_count);
         for (uint32_t i = 0; i < checkpoint_count; ++i) h.checkpoints.push_back(in.u32("checkpoints"));
+        const uint32_t shot_count = in.count("camera_shots", kMaxCameraShots);
+        h.camera_shots.reserve(shot_count);
+        for (uint32_t i = 0; i < shot_count; ++i) {
+            CameraShot& s = h.camera_shots.emplace_back();
+            s.tick = in.u32("camera_shots");
+            s.kind = CameraShotKind(in.u8("camera_shots"));  // checked with the rest below
+            for (float* v : {&s.point.x, &s.point.y, &s.point.z, &s.target.x, &s.target.y, &s.target.z,
+                             &s.radius_m, &s.height_m, &s.deg_per_s, &s.start_deg, &s.fov_deg})
+                *v = in.f32("camera_shots");
+        }
         const uint32_t subsystem_count = in.count("subsystem_names", kMaxSubsystems);
         h.subsystem_names.reserve(subsystem_count);
         for (uint32_t i = 0; i < subsystem_count; ++i)

@@ -41,6 +41,14 @@ std::vector<uint8_t> encode_header(const ReplayHeader& h) {
     put_u32(out, h.frame_height);
     put_u32(out, uint32_t(h.checkpoints.size()));
     for (uint32_t tick : h.checkpoints) put_u32(out, tick);
+    put_u32(out, uint32_t(h.camera_shots.size()));
+    for (const CameraShot& shot : h.camera_shots) {
+        put_u32(out, shot.tick);
+        out.push_back(uint8_t(shot.kind));
+        for (float v : {shot.point.x, shot.point.y, shot.point.z, shot.target.x, shot.target.y, shot.target.z,
+                        shot.radius_m, shot.height_m, shot.deg_per_s, shot.start_deg, shot.fov_deg})
+            put_f32(out, v);
+    }
     put_u32(out, uint32_t(h.subsystem_names.size()));
     for (const std::string& name : h.subsystem_names) put_str(out, name);
     put_str(out, h.sim_params);

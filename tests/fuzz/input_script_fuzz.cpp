@@ -20,6 +20,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             FUZZ_CHECK(i == 0 || s.checkpoints[i] > s.checkpoints[i - 1]);
         }
         for (const sim::TickInput& in : s.inputs) FUZZ_CHECK(sim::quantise(in) == in);
+        FUZZ_CHECK(s.camera_shots.size() <= game::kMaxCameraShots);
+        for (size_t i = 0; i < s.camera_shots.size(); ++i) {
+            FUZZ_CHECK(s.camera_shots[i].tick < s.end_tick);
+            FUZZ_CHECK(i == 0 || s.camera_shots[i].tick > s.camera_shots[i - 1].tick);
+            FUZZ_CHECK(game::camera_shot_problem(s.camera_shots[i]).empty());
+        }
     } catch (const game::ScriptError&) {
     }
     return 0;
