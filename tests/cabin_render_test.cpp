@@ -12,6 +12,7 @@
 
 #include "HeadlessTest.h"
 #include "RenderStage.h"
+#include "effects/scene/MirrorPass.h"
 #include "effects/scene/WeatherLook.h"
 #include "game/capture/ImageFiles.h"
 #include "sim/player/CameraRig.h"
@@ -21,7 +22,7 @@
 namespace {
 
 constexpr int kWidth = 480, kHeight = 270;
-constexpr StagePasses kCabinFrame = kLitScene | kMirrorPass | kTonemapPass;
+const StagePasses kCabinFrame = kLitScene | kMirrorPass | kTonemapPass;
 
 void maybe_write(const game::ImageRGBA8& img, const char* name) {
     if (const char* dir = std::getenv("SPINDRIFT_CABIN_PNG_DIR")) {
