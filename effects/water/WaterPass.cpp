@@ -1,6 +1,9 @@
 #include "effects/water/WaterPass.h"
 
 #include "effects/gl/PipelineState.h"
+#include "effects/scene/ScreenRect.h"
+
+#include <glm/common.hpp>
 
 namespace effects {
 
@@ -23,6 +26,25 @@ void WaterPass::register_params(ParamRegistry& params) {
 void WaterPass::render(const FrameContext& frame) {
     gather_water_view(frame.world, view_);
     draw(frame, view_);
+}
+
+glm::ivec4 WaterPass::water_rect(const Camera& cam, const SceneTargets& t, bool sheets) const {
+    glm::vec3 lo, hi;
+    surface_.bounds(lo, hi);
+    glm::ivec4 rect = screen_rect_of_box(cam.view_proj, cam.near_m, lo, hi, t.width(), t.height(), 1);
+    if (sheets && !sheets_.mesh().vertices.empty()) {
+        lo = hi = sheets_.mesh().vertices.front().position;
+        for (const SheetVertex& v : sheets_.mesh().vertices) {
+            lo = glm::min(lo, v.position);
+            hi = glm::max(hi, v.position);
+        }
+        const glm::ivec4 r = screen_rect_of_box(cam.view_proj, cam.near_m, lo, hi, t.width(), t.height(), 1);
+        if (r.z > r.x && r.w > r.y)
+            rect = rect.z > rect.x && rect.w > rect.y ? glm::ivec4(glm::min(glm::ivec2(rect), glm::ivec2(r)),
+                                                                   glm::max(glm::ivec2(rect.z, rect.w), glm::ivec2(r.z, r.w)))
+                                                      : r;
+    }
+    return rect;
 }
 
 void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
@@ -76,7 +98,7 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     }
     t.colour_copy().bind(0);
     t.depth_copy().bind(1);
-    shading_.shade(t, sheets);
+    shading_.shade(t, sheets, water_rect(cam, t, sheets));
 
     // Spray over the shaded water, into the scene colour (depth-tested, not written).
     spray_.draw(frame, view.spray, look_.spray);

@@ -42,6 +42,10 @@ public:
     const std::vector<TileDraw>& surface_tiles() const { return surface_.last_tiles(); }
 
 private:
+    // The pixels the water's geometry can cover this frame: the shading passes' scissor
+    // (the sea's box ends at the horizon, so the sky above it is never masked).
+    glm::ivec4 water_rect(const Camera& cam, const SceneTargets& t, bool sheets) const;
+
     WaterSurfaceRenderer surface_;
     SplashSheetRenderer sheets_;
     SprayRenderer spray_;

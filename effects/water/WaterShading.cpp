@@ -53,7 +53,8 @@ void WaterShading::begin_geometry(const SceneTargets& t) {
     glClearBufferfv(GL_COLOR, 1, none);
 }
 
-void WaterShading::shade(const SceneTargets& t, bool sheets) {
+void WaterShading::shade(const SceneTargets& t, bool sheets, glm::ivec4 rect) {
+    if (rect.z <= rect.x || rect.w <= rect.y) return;
     glBindFramebuffer(GL_FRAMEBUFFER, shade_fbo_.id());
     glViewport(0, 0, t.width(), t.height());
     t.depth().bind(kDepthUnit);
@@ -62,7 +63,8 @@ void WaterShading::shade(const SceneTargets& t, bool sheets) {
     gl::bind_empty_vertex_array();
 
     // The mask, depth only.
-    gl::apply({.depth_test = true, .depth_write = true, .depth_func = GL_ALWAYS, .colour_write = false});
+    gl::apply({.depth_test = true, .depth_write = true, .depth_func = GL_ALWAYS, .colour_write = false, .scissor = true});
+    glScissor(rect.x, rect.y, rect.z - rect.x, rect.w - rect.y);
     const float far = 1.0f;
     glClearBufferfv(GL_DEPTH, 0, &far);
     mask_.use();
@@ -72,7 +74,8 @@ void WaterShading::shade(const SceneTargets& t, bool sheets) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     // The shading passes, where the mask lets them through.
-    gl::apply({.depth_test = true, .depth_func = GL_GREATER});
+    gl::apply({.depth_test = true, .depth_func = GL_GREATER, .scissor = true});
+    glScissor(rect.x, rect.y, rect.z - rect.x, rect.w - rect.y);
     auto pass = [&](const gl::Program& p, float depth) {
         p.use();
         p.set("u_window_depth", depth);

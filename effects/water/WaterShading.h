@@ -29,9 +29,11 @@ public:
     // foam weight; blue a sheet's opacity.
     void begin_geometry(const SceneTargets& targets);
     // Shades the water pixels into the scene colour: the sea, then the splash sheets
-    // if there are any. The programs' uniforms (lighting, camera, scene copies, look)
-    // must be set by the caller first.
-    void shade(const SceneTargets& targets, bool sheets);
+    // if there are any, within `rect` ({x0, y0, x1, y1}, x1/y1 exclusive: where the
+    // geometry step can have drawn; the mask pass costs a fill of whatever it covers).
+    // The programs' uniforms (lighting, camera, scene copies, look) must be set by the
+    // caller first.
+    void shade(const SceneTargets& targets, bool sheets, glm::ivec4 rect);
 
     // One program per kind: a software rasteriser would run both kinds' code for
     // every pixel of a shader that branches between them.

@@ -81,6 +81,12 @@ void WaterSurfaceRenderer::update(const WaterView& view) {
     p.set("u_slopes", int(kSlopesUnit));
 }
 
+void WaterSurfaceRenderer::bounds(glm::vec3& lo, glm::vec3& hi) const {
+    const float e = mesh_.half_extent_m;
+    lo = glm::vec3(-e, sea_level_m_ + min_height_ - 0.01f, -e);
+    hi = glm::vec3(e, sea_level_m_ + max_height_ + 0.01f, e);
+}
+
 void WaterSurfaceRenderer::draw(const Camera& camera, int viewport_height, float target_cell_px) {
     const gl::Program& p = program_;
     heights_.bind(kHeightsUnit);

@@ -38,6 +38,8 @@ public:
     const gl::Program& program() const { return program_; }
     const std::vector<TileDraw>& last_tiles() const { return tiles_; }
     const LatticeLayout& lattice() const { return mesh_.lattice; }
+    // A box holding everything draw() draws, as of the last update().
+    void bounds(glm::vec3& lo, glm::vec3& hi) const;
 
 private:
     struct Shape {

@@ -41,6 +41,6 @@ void main() {
     vec3 n = texelFetch(u_normals, px, 0).xyz;
     n = dot(n, n) > 1e-8 ? normalize(n) : vec3(0, 1, 0);
     vec3 v = normalize(u_eye - pos);
-    vec3 c = shade_sea(pos, n, v, sun_visibility(pos, vec3(0, 1, 0)), kind.g, kind.b);
+    vec3 c = shade_sea(pos, n, v, water_sun_visibility(pos), kind.g, kind.b);
     o_colour = vec4(apply_fog(c, pos, u_eye), 1.0);
 }

@@ -47,7 +47,7 @@ void main() {
     n = dot(n, n) > 1e-8 ? normalize(n) : vec3(0, 1, 0);
     vec3 v = normalize(u_eye - pos);
     float thickness = u_sheet_thickness_m * clamp((kind.r - 0.76) / 0.24, 0.0, 1.0);
-    vec3 c = shade_sheet(pos, n, v, sun_visibility(pos, vec3(0, 1, 0)), thickness, kind.g);
+    vec3 c = shade_sheet(pos, n, v, water_sun_visibility(pos), thickness, kind.g);
     c = mix(sheet_background(vec3(0, 1, 0)), c, kind.b);  // what lies behind shows through its edges
     o_colour = vec4(apply_fog(c, pos, u_eye), 1.0);
 }

@@ -14,10 +14,15 @@ vec2 ripple_slope(vec2 p, float t, float dist) {
     return s * exp(-dist / 60.0);
 }
 
+// Value noise on a lattice of hashed values. The hash is arithmetic only (Hoskins'
+// "hash without sine", for the four corners at once): llvmpipe evaluates sin as a
+// range reduction and a polynomial, and the foam is read up to four times a pixel.
 float foam_noise(vec2 p) {
     vec2 i = floor(p), f = fract(p);
     vec2 u = f * f * (3.0 - 2.0 * f);
-    vec4 h = fract(sin(vec4(dot(i, vec2(127.1, 311.7)), dot(i + vec2(1, 0), vec2(127.1, 311.7)),
-                            dot(i + vec2(0, 1), vec2(127.1, 311.7)), dot(i + vec2(1, 1), vec2(127.1, 311.7)))) * 43758.55);
+    vec4 a = fract((i.x + vec4(0.0, 1.0, 0.0, 1.0)) * 0.1031);
+    vec4 b = fract((i.y + vec4(0.0, 0.0, 1.0, 1.0)) * 0.1031);
+    vec4 d = a * (b + 33.33) + b * (a + 33.33) + a * (a + 33.33);
+    vec4 h = fract((a + b + 2.0 * d) * (a + d));
     return mix(mix(h.x, h.y, u.x), mix(h.z, h.w, u.x), u.y);
 }
