@@ -65,7 +65,7 @@ game::ReplayHeader header() {
     game::ReplayHeader h;
     h.level_id = "harbour";
     h.seed = 7;
-    h.build_hash = 0x5EED;
+    h.sim_signature = 0x5EED;
     h.subsystem_names = {"car", "boat", "water"};
     return h;
 }

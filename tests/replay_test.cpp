@@ -70,7 +70,7 @@ game::ReplayHeader test_header(size_t subsystems = 3) {
     h.level_hash = 0x1122334455667788ull;
     h.seed = 42;
     h.tick_rate_hz = 60;
-    h.build_hash = 0xDEADBEEFCAFEF00Dull;
+    h.sim_signature = 0xDEADBEEFCAFEF00Dull;
     h.frame_width = 320;
     h.frame_height = 180;
     h.checkpoints = {90, 300, 600};
@@ -627,7 +627,7 @@ game::Replay record_test_world(const fs::path& path, const std::vector<sim::Tick
     sim::World world(make_test_level());
     game::ReplayHeader h = test_header();
     h.subsystem_names = world.subsystem_names();
-    h.build_hash = world.build_hash();
+    h.sim_signature = world.sim_signature();
     auto writer = game::ReplayWriter::create(path, h);
     for (sim::TickInput in : inputs) {
         world.step(in);
@@ -673,6 +673,20 @@ TEST_F(ReplayCheck, PassesAFaithfulReplayCheckingEveryTick) {
     out = check_test_world(r, longer);
     EXPECT_FALSE(out.divergence) << out.divergence->message;
     EXPECT_EQ(out.checked, 150u);
+}
+
+// The header's simulation signature (the sim's version and subsystem names) must be
+// this world's: another is refused before any tick, naming it.
+TEST_F(ReplayCheck, RefusesAnotherSimulationSignatureNamingIt) {
+    game::Replay r = record_test_world(file("w.replay"), inputs_);
+    const sim::World world(make_test_level());
+    const uint64_t level_hash = r.header.level_hash;
+    EXPECT_FALSE(game::replay_mismatch(r, world, level_hash));
+    r.header.sim_signature ^= 1;
+    const std::optional<std::string> m = game::replay_mismatch(r, world, level_hash);
+    ASSERT_TRUE(m);
+    EXPECT_NE(m->find("recorded by a different simulation (simulation signature "), std::string::npos) << *m;
+    EXPECT_NE(m->find("re-record it from its .script"), std::string::npos) << *m;
 }
 
 TEST_F(ReplayCheck, NamesTheFirstDivergingTickAndSubsystem) {

@@ -144,7 +144,7 @@ TEST(VehicleReset, RoundTripsThroughAReplay) {
     fs::path file = fs::temp_directory_path() / ("spindrift_reset_" + std::to_string(::getpid()) + ".replay");
     game::ReplayHeader header;
     header.level_id = "test";
-    header.build_hash = recorded.build_hash();
+    header.sim_signature = recorded.sim_signature();
     header.subsystem_names = recorded.subsystem_names();
     {
         auto writer = game::ReplayWriter::create(file, header);

@@ -19,9 +19,9 @@ std::optional<std::string> replay_mismatch(const Replay& replay, const sim::Worl
     if (h.level_hash != level_hash)
         return "it was recorded on level '" + h.level_id + "' with content hash " + hex(h.level_hash) +
                ", but that level's files now hash to " + hex(level_hash) + " (re-record it from its .script)";
-    if (h.build_hash != world.build_hash())
-        return "it was recorded by a different simulation (build hash " + hex(h.build_hash) + ", this one is " +
-               hex(world.build_hash()) + "): re-record it from its .script";
+    if (h.sim_signature != world.sim_signature())
+        return "it was recorded by a different simulation (simulation signature " + hex(h.sim_signature) +
+               ", this one is " + hex(world.sim_signature()) + "): re-record it from its .script";
     if (h.subsystem_names != world.subsystem_names())
         return "its subsystem list does not match this simulation's";
     if (h.tick_rate_hz != uint32_t(sim::kTickRateHz))

@@ -16,7 +16,7 @@ struct Divergence {
     std::string message;
 };
 
-// Checks that the replay fits this world (level content, sim build, subsystems,
+// Checks that the replay fits this world (level content, simulation signature, subsystems,
 // tick rate); returns what does not, or nothing.
 std::optional<std::string> replay_mismatch(const Replay& replay, const sim::World& world, uint64_t level_hash);
 

@@ -2,7 +2,7 @@
 // The replay file layout shared by ReplayWriter and the reader. All integers little-endian.
 //
 //   header : magic[8] version:u32 header_size:u32            (header_size counts the whole header)
-//            level_id:str level_hash:u64 seed:u64 tick_rate_hz:u32 build_hash:u64
+//            level_id:str level_hash:u64 seed:u64 tick_rate_hz:u32 sim_signature:u64
 //            frame_width:u32 frame_height:u32
 //            checkpoint_count:u32 checkpoint:u32[count]
 //            camera_shot_count:u32 camera_shot[count]         (ascending ticks, see CameraShot.h)
@@ -84,7 +84,7 @@ struct ReplayHeader {
     uint64_t level_hash = 0;            // content hash of the level files
     uint64_t seed = 0;
     uint32_t tick_rate_hz = 60;         // 1..1000
-    uint64_t build_hash = 0;            // sim layout/version hash; a mismatch refuses the replay
+    uint64_t sim_signature = 0;         // World::sim_signature(): sim version and subsystems; a mismatch refuses the replay
     uint32_t frame_width = 480, frame_height = 270;  // checkpoint frame size, each 16..4096
     std::vector<uint32_t> checkpoints;  // ticks whose frames are checked: ascending, unique, <= 1024
     std::vector<CameraShot> camera_shots;  // the script's cameras: ascending ticks, <= 1024

@@ -122,7 +122,7 @@ private:
         h.level_hash = in.u64("level_hash");
         h.seed = in.u64("seed");
         h.tick_rate_hz = in.u32("tick_rate_hz");
-        h.build_hash = in.u64("build_hash");
+        h.sim_signature = in.u64("sim_signature");
         h.frame_width = in.u32("frame_width");
         h.frame_height = in.u32("frame_height");
         const uint32_t checkpoint_count = in.count("checkpoints", kMaxCheckpoints);

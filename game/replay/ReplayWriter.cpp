@@ -36,7 +36,7 @@ std::vector<uint8_t> encode_header(const ReplayHeader& h) {
     put_u64(out, h.level_hash);
     put_u64(out, h.seed);
     put_u32(out, h.tick_rate_hz);
-    put_u64(out, h.build_hash);
+    put_u64(out, h.sim_signature);
     put_u32(out, h.frame_width);
     put_u32(out, h.frame_height);
     put_u32(out, uint32_t(h.checkpoints.size()));

@@ -10,7 +10,7 @@ ReplayHeader replay_header_for(const GameSession& session, uint32_t frame_width,
     h.level_hash = session.level.content_hash;
     h.seed = world.level().seed;
     h.tick_rate_hz = uint32_t(sim::kTickRateHz);
-    h.build_hash = world.build_hash();
+    h.sim_signature = world.sim_signature();
     h.frame_width = frame_width;
     h.frame_height = frame_height;
     h.checkpoints = std::move(checkpoints);

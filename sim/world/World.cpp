@@ -102,7 +102,7 @@ std::vector<std::string> World::subsystem_names() const {
     return names;
 }
 
-uint64_t World::build_hash() const {
+uint64_t World::sim_signature() const {
     Hasher h;
     h.u64(kSimVersion);
     for (const auto& s : subsystems_) {

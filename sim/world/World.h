@@ -50,9 +50,10 @@ public:
     uint64_t tick() const { return tick_; }
     WorldHash hash() const;
     std::vector<std::string> subsystem_names() const;
-    // Changes whenever the subsystem list or the sim's version changes: replays made
-    // by another sim are refused rather than silently diverging.
-    uint64_t build_hash() const;
+    // The simulation signature: a hash of kSimVersion and the subsystem names (not of
+    // the build), so it changes whenever either does: replays made by another sim are
+    // refused rather than silently diverging.
+    uint64_t sim_signature() const;
 
     const LevelDesc& level() const { return level_; }
     const Terrain& terrain() const { return terrain_; }
