@@ -64,7 +64,9 @@ const std::vector<PassEntry>& pass_table() {
                    {SceneColour, "water pixels shaded, spray blended"}}},
          make<WaterPass>},
         {"fluid",
-         {.reads = {Sky, Depth}, .onto = {{SceneColour, "the tank's liquid inside its screen rectangle"}}},
+         {.reads = {Sky, Depth, SceneCopy},
+          .onto = {{SceneColour, "the tank's liquid inside its screen rectangle"}},
+          .refreshes = {{SceneCopy, "around the tank's rectangle: the water behind it, for the rays through the liquid"}}},
          make<FluidPass>},
         // Additive; stops at the water's depth too.
         {"energy", {.reads = {Shots, Depth}, .onto = {{SceneColour, "glow and bloom added"}}}, make<EnergyPass>},
@@ -72,7 +74,9 @@ const std::vector<PassEntry>& pass_table() {
         {"rain_streaks", {.reads = {Sky, Depth}, .onto = {{SceneColour, "streaks blended"}}}, make<RainStreakPass>},
         // Refracts everything before it.
         {"rain",
-         {.reads = {Sky, Depth}, .onto = {{SceneColour, "the windshield blended over what it refracts"}}},
+         {.reads = {Sky, Depth, SceneCopy},
+          .onto = {{SceneColour, "the windshield blended over what it refracts"}},
+          .refreshes = {{SceneCopy, "whole, with mips: everything before the windshield, out of focus in the drops"}}},
          make<RainPass>},
         {"tonemap", {.reads = {SceneColour}, .writes = {Display}}, make<TonemapPass>},
         // At the scene's size: before the upscale, fewer pixels.

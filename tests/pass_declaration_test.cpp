@@ -53,6 +53,38 @@ TEST(PassDeclaration, ASecondWriteMustDrawOntoAndSayWhy) {
               std::vector<std::string>{"pass \"glow\" draws onto \"scene colour\" without saying why"});
 }
 
+TEST(PassDeclaration, ACopyIsRefreshedOnlyAfterADrawOntoWhatItCopies) {
+    const DeclaredPass opaque{"opaque", {.writes = {SceneColour, Depth}}};
+    const DeclaredPass copy{"scene_copy", {.reads = {SceneColour, Depth}, .writes = {SceneCopy}}};
+    const DeclaredPass water{"water", {.reads = {SceneCopy}, .onto = {{SceneColour, "the sea"}}}};
+    const DeclaredPass fluid{"fluid",
+                             {.reads = {SceneCopy}, .onto = {{SceneColour, "the tank"}}, .refreshes = {{SceneCopy, "the sea"}}}};
+    const DeclaredPass rain{"rain", {.reads = {SceneCopy}, .refreshes = {{SceneCopy, "with mips"}}}};
+    const DeclaredPass tonemap{"tonemap", {.reads = {SceneColour}, .writes = {Output}}};
+    // The fluid's own draw counts for the rain after it.
+    EXPECT_EQ(check_pass_order({opaque, copy, water, fluid, rain, tonemap}), std::vector<std::string>{});
+
+    EXPECT_EQ(check_pass_order({opaque, copy, rain, tonemap}),
+              std::vector<std::string>{
+                  "pass \"rain\" refreshes \"scene copy\", but no pass drew onto \"scene colour\" since it was copied"});
+    // A second refresh with nothing drawn between.
+    EXPECT_EQ(check_pass_order({opaque, copy, water, rain, rain, tonemap}),
+              std::vector<std::string>{
+                  "pass \"rain\" refreshes \"scene copy\", but no pass drew onto \"scene colour\" since it was copied"});
+
+    const DeclaredPass early{"fluid", {.onto = {{SceneColour, "the tank"}}, .refreshes = {{SceneCopy, "the sea"}}}};
+    EXPECT_EQ(check_pass_order({opaque, early, copy, water, tonemap}),
+              std::vector<std::string>{"pass \"fluid\" refreshes \"scene copy\" before any pass writes it"});
+
+    const DeclaredPass silent{"fluid", {.reads = {SceneCopy}, .onto = {{SceneColour, "the tank"}}, .refreshes = {{SceneCopy, ""}}}};
+    EXPECT_EQ(check_pass_order({opaque, copy, water, silent, tonemap}),
+              std::vector<std::string>{"pass \"fluid\" refreshes \"scene copy\" without saying why"});
+
+    const DeclaredPass not_a_copy{"fluid", {.onto = {{SceneColour, "the tank"}}, .refreshes = {{Depth, "the sea"}}}};
+    EXPECT_EQ(check_pass_order({opaque, copy, water, not_a_copy, tonemap}),
+              std::vector<std::string>{"pass \"fluid\" refreshes \"depth\", which is no copy"});
+}
+
 TEST(PassDeclaration, FrameDataIsReadOnlyToPasses) {
     const std::vector<DeclaredPass> passes{{"shadow", {.reads = {Sky}, .writes = {Sky, Output}}}};
     EXPECT_EQ(check_pass_order(passes),

@@ -148,9 +148,6 @@ void FluidPass::resize_targets(int w, int h) {
     thickness_fbo_ = gl::Framebuffer::create("fluid.splash_thickness");
     thickness_fbo_.attach_colour(0, thickness_);
     thickness_fbo_.check_complete();
-    background_ = gl::Texture::create_2d("fluid.background", GL_RGBA16F, w, h);
-    background_.set_filter(GL_NEAREST, GL_NEAREST);
-    shade_colour_id_ = 0;
     smoothed_front_ = &front_;
 }
 
@@ -272,7 +269,7 @@ void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
 }
 
 void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
-    const SceneTargets& t = frame.scene.targets;
+    SceneTargets& t = frame.scene.targets;
     const Camera& cam = frame.camera;
     resize_targets(t.width(), t.height());
     rect_ = screen_rect(frame, view, (FluidSmoothing::kMaxKernel - 1) / 2 + 2);
@@ -286,12 +283,12 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
     const glm::vec2 viewport{float(width_), float(height_)};
     const float radius = view.particle_radius_m;
 
-    // The scene so far (water included), around the rectangle: what refracted rays see.
+    // The scene so far (water included), around the rectangle: what refracted rays see,
+    // copied into the shared scene copy there.
     const glm::ivec2 grow = (glm::ivec2(rect_.z - rect_.x, rect_.w - rect_.y)) / 2;
     const glm::ivec4 bg = glm::clamp(glm::ivec4(rect_.x - grow.x, rect_.y - grow.y, rect_.z + grow.x, rect_.w + grow.y),
                                      glm::ivec4(0), glm::ivec4(width_, height_, width_, height_));
-    glCopyImageSubData(t.colour().id(), GL_TEXTURE_2D, 0, bg.x, bg.y, 0, background_.id(), GL_TEXTURE_2D, 0, bg.x, bg.y,
-                       0, bg.z - bg.x, bg.w - bg.y, 1);
+    t.refresh_colour_copy(bg);
 
     gl::PipelineScope state({.scissor = true});
     glScissor(rect_.x, rect_.y, rect_.z - rect_.x, rect_.w - rect_.y);
@@ -351,11 +348,11 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
 
     {
         gl::DebugGroup group("fluid.refraction");
-        if (shade_colour_id_ != t.colour().id()) {
+        if (shade_generation_ != t.generation()) {
             shade_fbo_ = gl::Framebuffer::create("fluid.shade");
             shade_fbo_.attach_colour(0, t.colour());
             shade_fbo_.check_complete();
-            shade_colour_id_ = t.colour().id();
+            shade_generation_ = t.generation();
         }
         shade_fbo_.bind();
         const gl::Program& p = refract_;
@@ -379,7 +376,7 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
             maps[k]->bind(GLuint(1 + k));
             p.set(names[k], 1 + k);
         }
-        background_.bind(9);
+        t.colour_copy().bind(9);  // read with texelFetch: the copy's filter does not matter
         p.set("u_background", 9);
         t.depth().bind(10);
         p.set("u_scene_depth", 10);

@@ -84,9 +84,8 @@ private:
     gl::Framebuffer normal_fbo_;
     gl::Texture thickness_;  // the splash's, low resolution
     gl::Framebuffer thickness_fbo_;
-    gl::Texture background_;
-    gl::Framebuffer shade_fbo_;
-    GLuint shade_colour_id_ = 0;
+    gl::Framebuffer shade_fbo_;      // over the scene colour
+    uint64_t shade_generation_ = 0;  // SceneTargets::generation() it was built for
     gl::Buffer particles_[2];  // [0] body, [1] splash
     const gl::Texture* smoothed_front_ = nullptr;
     const gl::Texture* smoothed_back_ = nullptr;

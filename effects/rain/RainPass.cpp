@@ -13,7 +13,9 @@ RainPass::RainPass(int height_map_width, int height_map_height)
     : height_map_(height_map_width, height_map_height),
       made_width_(height_map_width),
       made_height_(height_map_height),
-      shade_(gl::Program::from_files("rain.windshield", {"rain/windshield.vert.glsl", "rain/windshield.frag.glsl"})) {}
+      shade_(gl::Program::from_files("rain.windshield", {"rain/windshield.vert.glsl", "rain/windshield.frag.glsl"})),
+      // Mirrored repeat: the seed folds lookups that leave the image back in.
+      behind_sampler_(gl::Sampler::create("rain.behind", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_MIRRORED_REPEAT)) {}
 
 void RainPass::register_params(ParamRegistry& params) {
     params.add("rain", "draw", &look_.enabled);
@@ -49,32 +51,21 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     compression.steps = look_.compression_steps;
     height_map_.update(view.metaballs, glass_size, look_.radius_scale, compression);
 
-    // What lies behind the glass now (water and all), with mips: the copy SceneTargets
-    // keeps predates the water and has none.
-    const SceneTargets& t = frame.scene.targets;
-    if (behind_w_ != t.width() || behind_h_ != t.height()) {
-        behind_w_ = t.width();
-        behind_h_ = t.height();
-        behind_ = gl::Texture::create_2d("rain.behind", GL_RGBA16F, behind_w_, behind_h_,
-                                         gl::Texture::full_mip_levels(behind_w_, behind_h_));
-        behind_.set_filter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
-        behind_.set_wrap(GL_MIRRORED_REPEAT);  // the seed folds lookups that leave the image back in
-        behind_fbo_ = gl::Framebuffer::create("rain.behind");
-        behind_fbo_.attach_colour(0, behind_);
-        behind_fbo_.check_complete();
+    // What lies behind the glass now (water and all), with mips: the scene copy made
+    // again whole.
+    SceneTargets& t = frame.scene.targets;
+    if (scene_generation_ != t.generation()) {
         scene_colour_fbo_ = gl::Framebuffer::create("rain.scene_colour");
         scene_colour_fbo_.attach_colour(0, t.colour());
         scene_colour_fbo_.attach_depth(t.depth());
         scene_colour_fbo_.check_complete();
+        scene_generation_ = t.generation();
     }
-    glNamedFramebufferReadBuffer(t.scene().id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(t.scene().id(), behind_fbo_.id(), 0, 0, behind_w_, behind_h_, 0, 0, behind_w_, behind_h_,
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    behind_.generate_mipmaps();
+    t.refresh_colour_copy_with_mips();
     upload_film(view);
 
     glBindFramebuffer(GL_FRAMEBUFFER, scene_colour_fbo_.id());
-    glViewport(0, 0, behind_w_, behind_h_);
+    glViewport(0, 0, t.width(), t.height());
     // Tested, not written, against the scene's depth: the roof lining and the pillars
     // between the driver and the glass hide it; the offset keeps the glass's own depth
     // (where the scene drew it) from fighting with the drops.
@@ -93,8 +84,8 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     shade_.set("u_view_proj", frame.camera.view_proj);
     shade_.set("u_eye", frame.camera.eye);
     shade_.set("u_glass_size_m", glass_size);
-    shade_.set("u_inv_viewport", glm::vec2(1.0f / float(behind_w_), 1.0f / float(behind_h_)));
-    shade_.set("u_aspect", float(behind_w_) / float(behind_h_));
+    shade_.set("u_inv_viewport", glm::vec2(1.0f / float(t.width()), 1.0f / float(t.height())));
+    shade_.set("u_aspect", float(t.width()) / float(t.height()));
     shade_.set("u_refraction", look_.refraction);
     shade_.set("u_reach", look_.reach);
     shade_.set("u_blur_bias", look_.blur_bias);
@@ -118,9 +109,11 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     }
     for (int b = blades; b < 2; ++b) shade_.set(kSpan[b], glm::vec2(0.0f));
     height_map_.surface().bind(0);
-    behind_.bind(1);
+    t.colour_copy().bind(1);
+    behind_sampler_.bind(1);
     film_.bind(2);
     mesh_->draw();
+    gl::Sampler::unbind(1);
 }
 
 void RainPass::upload_film(const RainView& view) {

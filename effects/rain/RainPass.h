@@ -8,6 +8,7 @@
 
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
+#include "effects/gl/Sampler.h"
 #include "effects/gl/Texture.h"
 #include "effects/rain/DropHeightMap.h"
 #include "effects/rain/RainView.h"
@@ -48,11 +49,12 @@ private:
     int made_width_, made_height_;  // the size asked for at construction: the high preset's
     gl::Program shade_;
     std::unique_ptr<WindshieldMesh> mesh_;
-    gl::Texture behind_;  // the finished scene with mips, for the out-of-focus refraction
-    gl::Texture film_;    // RainView::film, one texel a glass cell
+    // The scene copy's mips read trilinearly, for the out-of-focus refraction.
+    gl::Sampler behind_sampler_;
+    gl::Texture film_;  // RainView::film, one texel a glass cell
     int film_cols_ = 0, film_rows_ = 0;
-    gl::Framebuffer behind_fbo_, scene_colour_fbo_;
-    int behind_w_ = 0, behind_h_ = 0;
+    gl::Framebuffer scene_colour_fbo_;
+    uint64_t scene_generation_ = 0;  // SceneTargets::generation() scene_colour_fbo_ was built for
     RainView view_;  // reused each frame
     RainLook look_;
     bool drew_ = false;

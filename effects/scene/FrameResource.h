@@ -18,13 +18,20 @@ enum class FrameResource {
     SceneColour,      // SceneTargets::colour()
     Normals,          // SceneTargets::normal()
     Depth,            // SceneTargets::depth()
-    SceneCopy,        // SceneTargets::colour_copy(), depth_copy()
+    SceneCopy,        // SceneTargets::colour_copy(), depth_copy(); the colour refreshed by passes
     Display,          // the tone-mapped image: SceneTargets::display(), or the output itself at scale 1
     Output,           // RenderOutput
 };
 
 // Made before the passes run, so no pass may write it.
 constexpr bool is_frame_data(FrameResource r) { return r == FrameResource::Sky || r == FrameResource::Shots; }
+
+// A copy another pass may refresh (PassDeclaration's Refresh): what it is copied from
+// again. Only the scene copy's colour is refreshed.
+constexpr bool is_copy(FrameResource r) { return r == FrameResource::SceneCopy; }
+constexpr FrameResource copied_from(FrameResource copy) {
+    return copy == FrameResource::SceneCopy ? FrameResource::SceneColour : copy;
+}
 
 constexpr std::string_view name_of(FrameResource r) {
     switch (r) {

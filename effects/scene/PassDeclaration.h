@@ -1,7 +1,8 @@
 #pragma once
 // What a pass reads and writes over the frame's named resources, and the check that a
 // list of passes is in an order that works: every read after the resource's write,
-// nothing written twice unless the later pass draws onto it and says why. No GL.
+// nothing written twice unless the later pass draws onto it and says why, a copy
+// refreshed only when something was drawn onto what it copies since. No GL.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,10 +17,18 @@ struct DrawOnto {
     std::string_view why;
 };
 
+// A pass copying into a copy an earlier pass made (is_copy()) again, all of it or a part,
+// before its draws: what passes drew onto the copied resource since is in the copy then.
+struct Refresh {
+    FrameResource copy;
+    std::string_view why;
+};
+
 struct PassDeclaration {
     std::vector<FrameResource> reads;
     std::vector<FrameResource> writes;  // made anew: the first write of the frame
     std::vector<DrawOnto> onto;
+    std::vector<Refresh> refreshes;
 };
 
 struct DeclaredPass {

@@ -6,10 +6,13 @@ void SceneTargets::resize(int width, int height) {
     if (width == width_ && height == height_) return;
     width_ = width;
     height_ = height;
+    ++generation_;
     colour_ = gl::Texture::create_2d("scene.colour", GL_RGBA16F, width, height);
     normal_ = gl::Texture::create_2d("scene.normal", GL_RGBA16F, width, height);
     depth_ = gl::Texture::create_2d("scene.depth", GL_DEPTH_COMPONENT32F, width, height);
-    colour_copy_ = gl::Texture::create_2d("scene.colour_copy", GL_RGBA16F, width, height);
+    // Mips for the rain's out-of-focus reads; the filter set below reads level 0 only.
+    colour_copy_ = gl::Texture::create_2d("scene.colour_copy", GL_RGBA16F, width, height,
+                                          gl::Texture::full_mip_levels(width, height));
     depth_copy_ = gl::Texture::create_2d("scene.depth_copy", GL_DEPTH_COMPONENT32F, width, height);
     for (gl::Texture* t : {&colour_, &normal_, &depth_, &colour_copy_, &depth_copy_}) {
         t->set_filter(GL_LINEAR, GL_LINEAR);
@@ -63,6 +66,17 @@ void SceneTargets::copy_scene() {
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBlitNamedFramebuffer(scene_fbo_.id(), copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
                            GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+}
+
+void SceneTargets::refresh_colour_copy(glm::ivec4 rect) {
+    if (rect.z <= rect.x || rect.w <= rect.y) return;
+    glCopyImageSubData(colour_.id(), GL_TEXTURE_2D, 0, rect.x, rect.y, 0, colour_copy_.id(), GL_TEXTURE_2D, 0, rect.x,
+                       rect.y, 0, rect.z - rect.x, rect.w - rect.y, 1);
+}
+
+void SceneTargets::refresh_colour_copy_with_mips() {
+    refresh_colour_copy({0, 0, width_, height_});
+    colour_copy_.generate_mipmaps();
 }
 
 }  // namespace effects

@@ -1,8 +1,12 @@
 #pragma once
 // The frame's shared render targets: HDR colour, world normals and depth that the
-// opaque passes write, a copy of colour and depth that the water refracts (the fluid
-// and the rain keep copies of their own), the tone-mapped display image and its
-// anti-aliased copy.
+// opaque passes write, one copy of colour and depth that every refracting pass reads (the
+// water as the scene_copy pass makes it; the fluid and the rain bring its colour up to
+// date first), the tone-mapped display image and its anti-aliased copy.
+#include <cstdint>
+
+#include <glm/vec4.hpp>
+
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Texture.h"
 
@@ -13,6 +17,16 @@ public:
     void resize(int width, int height);
     // Copies colour and depth so that later passes can sample them while drawing.
     void copy_scene();
+    // Copies the colour again inside `rect` (x0, y0, x1, y1 in pixels, x1/y1 exclusive,
+    // within the targets); the rest of the copy stays as it was.
+    void refresh_colour_copy(glm::ivec4 rect);
+    // Copies the whole colour again and makes the copy's mips from it, for blurred reads
+    // (through a sampler with a mipmap filter: the copy's own filter reads level 0 only).
+    void refresh_colour_copy_with_mips();
+    // Goes up each time resize() re-creates the targets: a framebuffer a pass builds over
+    // them is rebuilt when the generation it was built for differs (a size can come back,
+    // and a texture name can be reused, while the pass was not drawing).
+    uint64_t generation() const { return generation_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -34,6 +48,7 @@ public:
 
 private:
     int width_ = 0, height_ = 0;
+    uint64_t generation_ = 0;
     gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_, display_, antialiased_;
     gl::Framebuffer scene_fbo_, copy_fbo_, display_fbo_, antialiased_fbo_;
 };

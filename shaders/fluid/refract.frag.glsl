@@ -6,7 +6,7 @@
 // share is reflected (the background along the mirrored ray) and the rest refracted
 // (Snell) and traced to the next surface with the secant method; the path inside the
 // liquid is absorbed (Beer-Lambert). What leaves the back surface sees the scene behind
-// (u_background: the fluid pass's own copy of the scene colour around the tank, water
+// (u_background: the frame's scene copy, its colour refreshed around the tank, water
 // included), or the sky off screen. Then the tank's glass: a faint reflection and its
 // steel edges.
 uniform sampler2D u_body_front, u_body_back;
