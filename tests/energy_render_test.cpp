@@ -379,7 +379,9 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     constexpr int W = 160, H = 100;
     RenderStage stage(make_test_level(),
                       {.width = W, .height = H, .passes = kLitScene | kEnergyLightPass, .shadow_map_size = 512});
-    stage.scene().lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    effects::SkyState dusk = stage.sky();
+    dusk.sun_radiance = glm::vec3(0.3f);  // the beam's light shows
+    stage.set_sky(dusk);
     sim::World& world = stage.world();
     sim::CameraView view;
     view.eye = {-20.0f, 14.0f, -30.0f};
@@ -417,7 +419,9 @@ TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
                                           .height = H,
                                           .passes = kLitScene | kEnergyLightPass | kSceneCopyPass | kWaterPass,
                                           .shadow_map_size = 512});
-    stage.scene().lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    effects::SkyState dusk = stage.sky();
+    dusk.sun_radiance = glm::vec3(0.3f);  // the beam's light shows
+    stage.set_sky(dusk);
     sim::World& world = stage.world();
     sim::CameraView view;
     view.eye = {60.0f, 14.0f, 30.0f};

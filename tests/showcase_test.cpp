@@ -69,8 +69,6 @@ protected:
         RenderStage stage(game::GameSession::open(h.level_id, 1, h.seed),
                           {.width = int(h.frame_width), .height = int(h.frame_height)});
         for (uint32_t t = 0; t < tick && t < replay.inputs.size(); ++t) stage.world().step(replay.inputs[t]);
-        // As the game's renderer does for every frame.
-        stage.scene().lighting.set_weather(effects::weather_look(stage.world()));
         const game::CameraTrack cameras(h.camera_shots, h.tick_rate_hz);
         const sim::CameraView view = cameras.view_at(tick, stage.world().get<sim::CameraRig>().view());
         sim::CameraView away = view;
