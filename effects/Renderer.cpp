@@ -71,14 +71,19 @@ void Renderer::render(const sim::World& world, RenderOutput output, const FrameP
                       const FrameRequest& request) {
     const FrameContext frame = prepare(world, output, poses, request);
     timer_->frame_begin();
-    for (size_t i = 0; i < passes_.size(); ++i) {
-        const size_t index = pass_indices_[i];
-        if (request.skip.contains(index)) continue;
-        Pass& pass = *passes_[i];
-        gl::DebugGroup group(pass.name());
-        auto timing = timer_->scope(pass.name());
-        if (request.replaced.contains(index)) request.replacement(frame);
-        else pass.render(frame);
+    try {
+        for (size_t i = 0; i < passes_.size(); ++i) {
+            const size_t index = pass_indices_[i];
+            if (request.skip.contains(index)) continue;
+            Pass& pass = *passes_[i];
+            gl::DebugGroup group(pass.name());
+            auto timing = timer_->scope(pass.name());
+            if (request.replaced.contains(index)) request.replacement(frame);
+            else pass.render(frame);
+        }
+    } catch (...) {
+        timer_->frame_end();  // a pass refused its input: the next frame starts afresh
+        throw;
     }
     timer_->frame_end();
 }
