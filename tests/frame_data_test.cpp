@@ -109,9 +109,13 @@ TEST(FrameData, GatherFillsTheWeatherTheSkyTheMatricesAndTheShots) {
     const glm::mat4 sky_view = effects::sky_occlusion_view_proj({-5, 0, -5}, {5, 5, 5});
     effects::FrameData data;
     data.energy.segments.resize(40);  // left from another frame: replaced, not added to
-    effects::gather_frame_data(
-        world, {.camera = camera, .sun_dir = kSun, .shadow_map_size = 512, .shadow_framing = {}, .sky_occlusion_view_proj = sky_view},
-        data);
+    effects::gather_frame_data(world,
+                               {.camera = camera,
+                                .sun_dir = kSun,
+                                .shadow_map_size = 512,
+                                .shadow_framing = {},
+                                .sky_occlusion_view_proj = sky_view},
+                               data);
     effects::EnergyView shots;
     effects::gather_energy_view(world, shots);
     EXPECT_FALSE(shots.segments.empty());
@@ -125,12 +129,14 @@ TEST(FrameData, GatherFillsTheWeatherTheSkyTheMatricesAndTheShots) {
 
     // A caller's weather gives its sky; a caller's sky its sun, and the shadow follows it.
     const effects::WeatherLook rain = effects::weather_look(sim::Weather(1.0f));
-    effects::gather_frame_data(world, {.camera = camera, .sun_dir = kSun, .shadow_map_size = 512, .weather = rain}, data);
+    effects::gather_frame_data(world, {.camera = camera, .sun_dir = kSun, .shadow_map_size = 512, .weather = rain},
+                               data);
     EXPECT_EQ(data.weather, rain);
     EXPECT_EQ(data.sky, effects::sky_under(rain, kSun));
     effects::SkyState low_sun;
     low_sun.sun_dir = glm::normalize(glm::vec3(1.0f, 0.2f, 0.0f));
-    effects::gather_frame_data(world, {.camera = camera, .sun_dir = kSun, .shadow_map_size = 512, .sky = low_sun}, data);
+    effects::gather_frame_data(world, {.camera = camera, .sun_dir = kSun, .shadow_map_size = 512, .sky = low_sun},
+                               data);
     EXPECT_EQ(data.sky, low_sun);
     EXPECT_EQ(data.sun_shadow_view_proj,
               effects::sun_shadow_view_proj(camera, low_sun.sun_dir, world.level().land_height_m, 512, {}));
