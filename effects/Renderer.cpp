@@ -11,11 +11,17 @@ namespace effects {
 
 Renderer::Renderer(const SceneDesc& scene, const sim::World& world, RendererOptions options)
     : resources_{scene, SceneGeometry(scene, world.terrain()),
-                 SceneLighting(options.environment_size, effects::quality_settings(Quality::High).shadow_map_size),
-                 SceneTargets{}, effects::quality_settings(Quality::High)},
-      passes_(make_pass_list()),
+                 SceneLighting(options.environment_size, options.quality.shadow_map_size), SceneTargets{},
+                 options.quality},
+      passes_(make_passes(options.passes)),
       timer_(std::make_unique<gl::PassTimer>(options.timing)),
-      sun_dir_(glm::normalize(world.level().sun_direction)) {
+      sun_dir_(glm::normalize(world.level().sun_direction)),
+      sky_occlusion_view_proj_(
+          sky_occlusion_view_proj(resources_.geometry.props_min(), resources_.geometry.props_max())) {
+    for (size_t i = 0; i < pass_table().size(); ++i)
+        if (options.passes.contains(i)) pass_indices_.push_back(i);
+    params_.add("shadow", "half extent (m)", &shadow_framing_.half_extent_m, 20.0f, 200.0f);
+    params_.add("shadow", "centre ahead (m)", &shadow_framing_.ahead_m, 0.0f, 100.0f);
     for (auto& p : passes_) p->register_params(params_);
 }
 
@@ -33,28 +39,51 @@ void Renderer::set_render_scale(float scale) {
     render_scale_ = std::clamp(std::isfinite(scale) ? scale : 1.0f, kMinRenderScale, 1.0f);
 }
 
-void Renderer::render(const sim::World& world, RenderOutput output) { render(world, output, capture_poses(world)); }
-
-void Renderer::render(const sim::World& world, RenderOutput output, const FramePoses& poses) {
-    const int width = std::max(1, int(std::lround(float(output.width) * render_scale_)));
-    const int height = std::max(1, int(std::lround(float(output.height) * render_scale_)));
+void Renderer::size_scene(int output_width, int output_height) {
+    const int width = std::max(1, int(std::lround(float(output_width) * render_scale_)));
+    const int height = std::max(1, int(std::lround(float(output_height) * render_scale_)));
     if (width != resources_.targets.width() || height != resources_.targets.height()) {
         resources_.targets.resize(width, height);
         for (auto& p : passes_) p->resize(width, height);
     }
-    // The sim's weather, once for the frame.
-    resources_.lighting.sky.sun_dir = sun_dir_;
-    resources_.lighting.set_weather(weather_look(world));
+}
 
-    gather_frame_data(world, data_);
+FrameContext Renderer::prepare(const sim::World& world, RenderOutput output, const FramePoses& poses,
+                               const FrameRequest& request) {
+    size_scene(output.width, output.height);
+    camera_ = request.camera ? *request.camera : make_camera(poses.camera, float(output.width) / float(output.height));
+    gather_frame_data(world,
+                      {.camera = camera_,
+                       .sun_dir = sun_dir_,
+                       .shadow_map_size = resources_.quality.shadow_map_size,
+                       .shadow_framing = shadow_framing_,
+                       .sky_occlusion_view_proj = sky_occlusion_view_proj_,
+                       .weather = request.weather,
+                       .sky = request.sky},
+                      data_);
+    const double time_s = request.time_s ? *request.time_s : double(world.tick()) * sim::kTickSeconds;
+    return {world, camera_, resources_, output, time_s, poses, data_};
+}
 
-    Camera camera = make_camera(poses.camera, float(output.width) / float(output.height));
-    FrameContext frame{world, camera, resources_, output, double(world.tick()) * sim::kTickSeconds, poses, data_};
+void Renderer::render(const sim::World& world, RenderOutput output) { render(world, output, capture_poses(world)); }
+
+void Renderer::render(const sim::World& world, RenderOutput output, const FramePoses& poses,
+                      const FrameRequest& request) {
+    const FrameContext frame = prepare(world, output, poses, request);
     timer_->frame_begin();
-    for (auto& pass : passes_) {
-        gl::DebugGroup group(pass->name());
-        auto timing = timer_->scope(pass->name());
-        pass->render(frame);
+    try {
+        for (size_t i = 0; i < passes_.size(); ++i) {
+            const size_t index = pass_indices_[i];
+            if (request.skip.contains(index)) continue;
+            Pass& pass = *passes_[i];
+            gl::DebugGroup group(pass.name());
+            auto timing = timer_->scope(pass.name());
+            if (request.replaced.contains(index)) request.replacement(frame);
+            else pass.render(frame);
+        }
+    } catch (...) {
+        timer_->frame_end();  // a pass refused its input: the next frame starts afresh
+        throw;
     }
     timer_->frame_end();
 }

@@ -1,7 +1,10 @@
 #pragma once
-// The frame: the ordered pass list of PassList.cpp run over shared scene resources,
-// each pass in a debug group and timed.
+// The frame: the frame data gathered once, then the passes of PassList.cpp it holds, in
+// the table's order, over shared scene resources, each in a debug group and timed. The
+// only place passes are run: the game, the replays, the render stage and the benches.
+#include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "effects/Quality.h"
@@ -14,6 +17,23 @@ namespace effects {
 struct RendererOptions {
     int environment_size = 64;
     gl::TimingMode timing = gl::TimingMode::GpuQueries;
+    PassSet passes = PassSet::all();  // the passes the renderer holds
+    // The settings it starts with (set_quality replaces them); the shadow map is made at
+    // their size.
+    QualitySettings quality = quality_settings(Quality::High);
+};
+
+// What one frame does differently from the game's.
+struct FrameRequest {
+    PassSet skip;                  // held passes left out of this frame
+    std::optional<double> time_s;  // FrameContext::time_s; the world's tick time without
+    // The passes in `replaced` are drawn by `replacement` instead, in their place: a
+    // caller's own view of the sim (a pass's draw(frame, view)).
+    PassSet replaced;
+    std::function<void(const FrameContext&)> replacement;
+    std::optional<Camera> camera;        // instead of the poses' camera at the output's aspect
+    std::optional<WeatherLook> weather;  // instead of the world's
+    std::optional<SkyState> sky;         // instead of the sky under the weather
 };
 
 class Renderer {
@@ -22,7 +42,14 @@ public:
 
     void render(const sim::World& world, RenderOutput output);
     // The same with the moving things where `poses` puts them (between two ticks).
-    void render(const sim::World& world, RenderOutput output, const FramePoses& poses);
+    void render(const sim::World& world, RenderOutput output, const FramePoses& poses,
+                const FrameRequest& request = {});
+    // Sizes the scene for `output` and gathers the frame's data, without running a pass:
+    // the context a caller hands a pass's own draw. Valid until the next frame.
+    FrameContext prepare(const sim::World& world, RenderOutput output, const FramePoses& poses,
+                         const FrameRequest& request = {});
+    // The scene's targets at `width` x `height` (times the render scale) of output.
+    void size_scene(int width, int height);
 
     // The preset's settings; its render scale becomes the current one.
     void set_quality(Quality quality);
@@ -38,6 +65,8 @@ public:
     static constexpr float kMinRenderScale = 0.25f;
 
     const SceneTargets& targets() const { return resources_.targets; }
+    SceneResources& resources() { return resources_; }
+    const FrameData& frame_data() const { return data_; }  // the last frame's
     ParamRegistry& params() { return params_; }
     const std::vector<gl::PassTime>& pass_times() const { return timer_->results(); }
     const std::vector<std::unique_ptr<Pass>>& passes() const { return passes_; }
@@ -48,10 +77,14 @@ public:
 private:
     SceneResources resources_;
     FrameData data_;  // gathered once a frame, before the passes
+    Camera camera_;   // the frame's
     std::vector<std::unique_ptr<Pass>> passes_;
+    std::vector<size_t> pass_indices_;  // each held pass's row in the pass table
     std::unique_ptr<gl::PassTimer> timer_;
     ParamRegistry params_;
     glm::vec3 sun_dir_;
+    ShadowFraming shadow_framing_;
+    glm::mat4 sky_occlusion_view_proj_;  // the props stay put
     Quality quality_ = Quality::High;
     float render_scale_ = 1.0f;
 };

@@ -139,10 +139,10 @@ TEST_F(CabinRenderTest, NoMirrorPictureFromTheChaseCamera) {
 TEST_F(CabinRenderTest, RoofLiningIsDarkerUnderOvercastThanInSunButStillReads) {
     RenderStage stage(harbour_from_the_drivers_seat(false), {.width = kWidth, .height = kHeight, .passes = kCabinFrame});
     const effects::Camera camera = stage.camera(stage.world().get<sim::CameraRig>().view());
-    stage.scene().lighting.set_weather(effects::WeatherLook{});
+    stage.set_weather(effects::WeatherLook{});
     const game::ImageRGBA8 sun = stage.render(camera);
     const std::vector<float> depth = stage.depth();
-    stage.scene().lighting.set_weather(effects::weather_look(sim::Weather(1.0f)));
+    stage.set_weather(effects::weather_look(sim::Weather(1.0f)));
     const game::ImageRGBA8 rain = stage.render(camera);
     maybe_write(sun, "lining_sun.png");
     maybe_write(rain, "lining_rain.png");

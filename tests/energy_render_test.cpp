@@ -379,7 +379,9 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     constexpr int W = 160, H = 100;
     RenderStage stage(make_test_level(),
                       {.width = W, .height = H, .passes = kLitScene | kEnergyLightPass, .shadow_map_size = 512});
-    stage.scene().lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    effects::SkyState dusk = stage.sky();
+    dusk.sun_radiance = glm::vec3(0.3f);  // the beam's light shows
+    stage.set_sky(dusk);
     sim::World& world = stage.world();
     sim::CameraView view;
     view.eye = {-20.0f, 14.0f, -30.0f};
@@ -417,7 +419,9 @@ TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
                                           .height = H,
                                           .passes = kLitScene | kEnergyLightPass | kSceneCopyPass | kWaterPass,
                                           .shadow_map_size = 512});
-    stage.scene().lighting.sky.sun_radiance = glm::vec3(0.3f);  // dusk: the beam's light shows
+    effects::SkyState dusk = stage.sky();
+    dusk.sun_radiance = glm::vec3(0.3f);  // the beam's light shows
+    stage.set_sky(dusk);
     sim::World& world = stage.world();
     sim::CameraView view;
     view.eye = {60.0f, 14.0f, 30.0f};
@@ -455,18 +459,20 @@ TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
 // bloom spreads some of it beyond the field's reach, only near the beam.
 TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
     constexpr int W = 160, H = 96;
-    // The scene's targets only: the test clears them and draws the pass itself.
-    RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = {}, .shadow_map_size = 512});
+    // The energy pass alone over cleared targets, drawing the test's beam.
+    RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = kEnergyPass, .shadow_map_size = 512});
     const GLuint scene = stage.scene().targets.scene().id();
     const effects::Camera cam = look({0, 20, 0}, {0, 20, -1}, W, H);  // level, at the sky
     const std::vector<EnergySegment> beam = {segment({-3, 20, -15}, {1, 0, 0}, 6.0f, 0.12f, 1.1f)};
+    effects::EnergyPass& energy = stage.pass<effects::EnergyPass>();
     auto frame_with = [&](float bloom) {
         const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
         glClearNamedFramebufferfv(scene, GL_COLOR, 0, zero);
         const float far = 1.0f;
         glClearNamedFramebufferfv(scene, GL_DEPTH, 0, &far);
-        pass.look().bloom = bloom;
-        pass.draw(stage.context(cam), beam);
+        energy.look().bloom = bloom;
+        stage.draw(cam, {.replaced = kEnergyPass,
+                         .replacement = [&](const effects::FrameContext& frame) { energy.draw(frame, beam); }});
         return stage.hdr();
     };
     const game::ImageRGBA32F plain = frame_with(0.0f), bloomed = frame_with(0.5f);
@@ -479,7 +485,6 @@ TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
     EXPECT_GT(blue(bloomed, W / 2, H / 2), blue(plain, W / 2, H / 2));
     EXPECT_EQ(blue(bloomed, W / 2, 2), 0.0f);                      // and not far away
     for (float v : bloomed.pixels) ASSERT_TRUE(std::isfinite(v));
-    pass.look().bloom = effects::EnergyLook{}.bloom;
 }
 
 // A beam standing half in the harbour: the water pass writes the sea surface into the

@@ -29,7 +29,8 @@ protected:
         RenderStage stage(make_test_level(),
                           {.width = W, .height = H, .passes = kTonemapPass | kFxaaPass | kUpscalePass});
         const int w = W / scene_scale_div, h = H / scene_scale_div;
-        stage.scene().targets.resize(w, h);
+        stage.renderer().set_render_scale(1.0f / float(scene_scale_div));
+        stage.renderer().size_scene(W, H);  // the scene's targets, w x h, before the edge goes in
         std::vector<float> hdr(size_t(w * h * 4));
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {

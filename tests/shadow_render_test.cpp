@@ -92,7 +92,9 @@ TEST_F(ShadowRenderTest, ALitHillUnderALowSunDoesNotShadowItself) {
     // A low sun from +x: the hill's sunlit side is seen from the sun's side, its slopes
     // meeting the light at every angle down to grazing.
     const glm::vec3 sun = glm::normalize(glm::vec3(1.0f, 0.3f, 0.15f));
-    stage.scene().lighting.sky.sun_dir = sun;
+    effects::SkyState sky = stage.sky();
+    sky.sun_dir = sun;
+    stage.set_sky(sky);
     sim::CameraView view;
     view.eye = {0.0f, 12.0f, -40.0f};
     view.target = {-40.0f, 5.0f, -60.0f};
@@ -143,7 +145,7 @@ float ray_box_gap(glm::vec3 p, glm::vec3 sun, const glm::mat4& model, glm::vec3 
 TEST_F(ShadowRenderTest, TheCarsShadowStartsAtTheCarAndNothingElseIsDark) {
     RenderStage stage("harbour", {.width = W, .height = H, .passes = kLitScene | kTonemapPass});
     const sim::Pose car = effects::capture_poses(stage.world()).car;
-    const glm::vec3 sun = stage.scene().lighting.sky.sun_dir;
+    const glm::vec3 sun = stage.sky().sun_dir;
     const effects::Model& model = stage.scene().desc.models[size_t(stage.scene().desc.car_model)];
     const glm::vec3 lo = model.bounds_min, hi = model.bounds_max, size = hi - lo;
     // The body's core: all but the rounded ends and sides of its length and width, from

@@ -96,8 +96,6 @@ protected:
         const std::span<const float> dust = world.get<sim::DustField>().amounts();
         c.dust_at_start.assign(dust.begin(), dust.end());
         for (uint32_t t = 0; t < tick && t < replay.inputs.size(); ++t) world.step(replay.inputs[t]);
-        // As the game's renderer does for every frame.
-        c.stage->scene().lighting.set_weather(effects::weather_look(world));
         const game::CameraTrack cameras(h.camera_shots, h.tick_rate_hz);
         c.view = cameras.view_at(tick, world.get<sim::CameraRig>().view());
         c.time_s = double(tick) * sim::kTickSeconds;

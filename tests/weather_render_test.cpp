@@ -49,12 +49,12 @@ TEST_F(WeatherRenderTest, FullRainGreysAndDarkensTheSkyAndTheGroundAndDrawsStrea
     stage.world().step({});  // the chase camera behind the car on the road
     const effects::Camera camera = stage.camera(stage.world().get<sim::CameraRig>().view());
 
-    stage.scene().lighting.set_weather(effects::WeatherLook{});
+    stage.set_weather(effects::WeatherLook{});
     const game::ImageRGBA8 clear = stage.render(camera);
     const std::vector<float> depth = stage.depth();
     EXPECT_EQ(stage.pass<effects::RainStreakPass>().drawn_last_frame(), 0);
 
-    stage.scene().lighting.set_weather(effects::weather_look(sim::Weather(1.0f)));
+    stage.set_weather(effects::weather_look(sim::Weather(1.0f)));
     const game::ImageRGBA8 rain = stage.render(camera);
     EXPECT_GT(stage.pass<effects::RainStreakPass>().drawn_last_frame(), 1000);
 

@@ -84,7 +84,7 @@ void DustPass::render(const FrameContext& frame) {
     std::vector<bool> visible(props.size());
     std::vector<float> distance(props.size());
     std::vector<const DustDrawRange*> range(props.size());
-    frame.scene.lighting.apply(light_);
+    frame.scene.lighting.apply(light_, frame.data);
     light_.set("u_eye", cam.eye);
     light_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, geometry_.vertices().id());

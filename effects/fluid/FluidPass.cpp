@@ -254,7 +254,7 @@ void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
     glViewport(0, 0, width_, height_);
     glScissor(rect_.x, rect_.y, rect_.z - rect_.x, rect_.w - rect_.y);
     const gl::Program& p = splash_layer_;
-    frame.scene.lighting.apply_sky(p);
+    SceneLighting::apply_sky(p, frame.data.sky);
     p.use();
     set_ivec4(p, "u_rect", rect_);
     p.set("u_proj", cam.proj);
@@ -356,7 +356,7 @@ void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
         }
         shade_fbo_.bind();
         const gl::Program& p = refract_;
-        frame.scene.lighting.apply_sky(p);
+        SceneLighting::apply_sky(p, frame.data.sky);
         p.use();
         set_ivec4(p, "u_rect", rect_);
         p.set("u_proj", cam.proj);

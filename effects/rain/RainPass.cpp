@@ -79,7 +79,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
                              .offset_units = -4.0f});
 
     shade_.use();
-    frame.scene.lighting.apply_sky(shade_);
+    SceneLighting::apply_sky(shade_, frame.data.sky);
     shade_.set("u_model", view.car_to_world);
     shade_.set("u_view_proj", frame.camera.view_proj);
     shade_.set("u_eye", frame.camera.eye);

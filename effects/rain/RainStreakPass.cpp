@@ -31,7 +31,7 @@ void RainStreakPass::register_params(ParamRegistry& params) {
 }
 
 void RainStreakPass::render(const FrameContext& frame) {
-    const WeatherLook& weather = frame.scene.lighting.weather;
+    const WeatherLook& weather = frame.data.weather;
     drawn_ = look_.enabled ? int(std::lround(float(look_.drops_at_full_rain) * std::clamp(weather.rain_rate, 0.0f, 1.0f))) : 0;
     if (drawn_ <= 0) return;
     const SceneTargets& t = frame.scene.targets;

@@ -10,13 +10,13 @@ EnvironmentPass::EnvironmentPass()
 
 void EnvironmentPass::render(const FrameContext& frame) {
     SceneLighting& lighting = frame.scene.lighting;
-    if (valid_ && filled_ == lighting.sky) return;
+    if (valid_ && filled_ == frame.data.sky) return;
     // Face order +X -X +Y -Y +Z -Z with the GL cube map conventions.
     const glm::vec3 fwd[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     const glm::vec3 right[6] = {{0, 0, -1}, {0, 0, 1}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {-1, 0, 0}};
     const glm::vec3 up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
     program_.use();
-    lighting.apply_sky(program_);
+    SceneLighting::apply_sky(program_, frame.data.sky);
     gl::PipelineScope state(gl::kFullScreen);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     int size = lighting.env_cube.width();
@@ -31,7 +31,7 @@ void EnvironmentPass::render(const FrameContext& frame) {
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     lighting.env_cube.generate_mipmaps();
-    filled_ = lighting.sky;
+    filled_ = frame.data.sky;
     valid_ = true;
 }
 

@@ -8,12 +8,12 @@ namespace effects {
 
 enum class FrameResource {
     // Frame data, made once before the passes (Renderer::render).
-    Sky,    // sun direction and radiance, sky, the weather's look (SceneLighting::sky, ::weather)
-    Shots,  // the energy shots in flight, gathered from the world once (FrameContext::data.energy)
+    Sky,    // the weather's look, the sky under it, the shadow maps' views (FrameData but the shots)
+    Shots,  // the energy shots in flight, gathered from the world once (FrameData::energy)
     // Made by passes.
     EnvironmentCube,  // SceneLighting::env_cube
-    ShadowMap,        // SceneLighting::shadow_map and shadow_view_proj
-    SkyOcclusion,     // SceneLighting::sky_map and sky_view_proj
+    ShadowMap,        // SceneLighting::shadow_map, drawn from FrameData::sun_shadow_view_proj
+    SkyOcclusion,     // SceneLighting::sky_map, drawn from FrameData::sky_occlusion_view_proj
     LineLights,       // SceneLighting's line-light block
     SceneColour,      // SceneTargets::colour()
     Normals,          // SceneTargets::normal()

@@ -145,12 +145,12 @@ void MirrorPass::draw_behind(const FrameContext& frame, const View& v) {
                                                                std::to_string(frame.scene.geometry.ground_road_count())});
     const gl::Program& ground = ground_->get(cheap, line_lights);
     for (const gl::Program* p : {&objects, &ground}) {
-        frame.scene.lighting.apply(*p);
+        frame.scene.lighting.apply(*p, frame.data);
         p->set("u_view_proj", v.camera.view_proj);
         p->set("u_eye", v.camera.eye);
     }
     frame.scene.geometry.apply_ground(ground);
-    ground.set("u_wetness", frame.scene.lighting.weather.road_wetness);
+    ground.set("u_wetness", frame.data.weather.road_wetness);
     // The car is left out: the mirror looks out of it, through where its rear window is.
     const Frustum behind(v.camera.view_proj);
     frame.scene.geometry.draw(objects, ground, frame.poses, SceneGeometry::Use::Shading, behind, {},
@@ -165,7 +165,7 @@ void MirrorPass::draw_behind(const FrameContext& frame, const View& v) {
 
     gl::apply({.depth_test = true, .depth_func = GL_LEQUAL});
     sky_.use();
-    frame.scene.lighting.apply_sky(sky_);
+    SceneLighting::apply_sky(sky_, frame.data.sky);
     sky_.set("u_inv_view_proj", v.camera.inv_view_proj);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -37,12 +37,12 @@ void OpaquePass::render(const FrameContext& frame) {
         const gl::Program& objects = objects_.get(frame.scene.quality, lit);
         const gl::Program& ground = ground_->get(frame.scene.quality, lit);
         for (const gl::Program* p : {&objects, &ground}) {
-            lighting.apply(*p);
+            lighting.apply(*p, frame.data);
             p->set("u_view_proj", frame.camera.view_proj);
             p->set("u_eye", frame.camera.eye);
         }
         frame.scene.geometry.apply_ground(ground);
-        ground.set("u_wetness", lighting.weather.road_wetness);
+        ground.set("u_wetness", frame.data.weather.road_wetness);
         SceneGeometry::Select select;
         if (line_lights)
             select = [&lighting, lit](glm::vec3 lo, glm::vec3 hi) { return lighting.line_lights_reach(lo, hi) == lit; };
@@ -52,7 +52,7 @@ void OpaquePass::render(const FrameContext& frame) {
     // Sky last, only where nothing was drawn: the far plane passes GL_LEQUAL.
     gl::apply({.depth_test = true, .depth_func = GL_LEQUAL});
     sky_.use();
-    frame.scene.lighting.apply_sky(sky_);
+    SceneLighting::apply_sky(sky_, frame.data.sky);
     sky_.set("u_inv_view_proj", frame.camera.inv_view_proj);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -74,14 +74,7 @@ bool SceneLighting::line_lights_reach(glm::vec3 lo, glm::vec3 hi) const {
                        [&](const LineLight& l) { return line_light_reaches(l, lo, hi); });
 }
 
-void SceneLighting::set_weather(const WeatherLook& look) {
-    weather = look;
-    sky.sun_radiance = kClearSunRadiance * look.sunlight;
-    sky.sky_intensity = look.sky_intensity;
-    sky.overcast = look.overcast;
-}
-
-glm::vec3 SceneLighting::cabin_daylight() const {
+glm::vec3 SceneLighting::cabin_daylight(const SkyState& sky) {
     // The sky as common/sky.glsl has it, halfway up from the horizon (where the glass
     // is): blue when clear, the cloud deck's grey under cloud.
     const glm::vec3 clear_sky(0.30f, 0.44f, 0.70f), cloud(0.34f, 0.36f, 0.38f);
@@ -95,25 +88,25 @@ glm::vec3 SceneLighting::cabin_daylight() const {
     return kSkyThroughGlass * bounced_sky + kSunThroughGlass * low_sun * sky.sun_radiance;
 }
 
-void SceneLighting::apply_sky(const gl::Program& p) const {
+void SceneLighting::apply_sky(const gl::Program& p, const SkyState& sky) {
     p.set("u_sun_dir", sky.sun_dir);
     p.set("u_sun_radiance", sky.sun_radiance);
     p.set("u_sky_intensity", sky.sky_intensity);
     p.set("u_overcast", sky.overcast);
 }
 
-void SceneLighting::apply(const gl::Program& p) const {
-    apply_sky(p);
+void SceneLighting::apply(const gl::Program& p, const FrameData& frame) const {
+    apply_sky(p, frame.sky);
     // Texture coordinates in [0,1] and depth in [0,1] from clip space.
     glm::mat4 bias(0.5f);
     bias[3] = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-    p.set("u_shadow_matrix", bias * shadow_view_proj);
+    p.set("u_shadow_matrix", bias * frame.sun_shadow_view_proj);
     p.set("u_env_max_lod", env_max_lod());
     p.set("u_env", int(kEnvUnit));
     p.set("u_shadow_map", int(kShadowUnit));
-    p.set("u_sky_matrix", bias * sky_view_proj);
+    p.set("u_sky_matrix", bias * frame.sky_occlusion_view_proj);
     p.set("u_sky_map", int(kSkyUnit));
-    p.set("u_cabin_daylight", cabin_daylight());
+    p.set("u_cabin_daylight", cabin_daylight(frame.sky));
     env_cube.bind(kEnvUnit);
     shadow_map.bind(kShadowUnit);
     sky_map.bind(kSkyUnit);

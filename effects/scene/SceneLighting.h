@@ -1,6 +1,7 @@
 #pragma once
-// Sun, sky and their textures: the environment cube the sky fills and the sun's
-// shadow map. Every lit pass binds them with apply().
+// The lighting's textures: the environment cube the sky fills, the sun's shadow map, the
+// sky-occlusion map and the line lights. Every lit pass binds them, with the frame's sky
+// and matrices (FrameData), through apply().
 #include <span>
 #include <vector>
 
@@ -10,20 +11,9 @@
 #include "effects/gl/Buffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
-#include "effects/scene/WeatherLook.h"
+#include "effects/scene/FrameData.h"
 
 namespace effects {
-
-// The sun's radiance on a clear day.
-inline constexpr glm::vec3 kClearSunRadiance{3.2f, 3.0f, 2.7f};
-
-struct SkyState {
-    glm::vec3 sun_dir{0.4f, 0.8f, 0.3f};
-    glm::vec3 sun_radiance = kClearSunRadiance;
-    float sky_intensity = 1.0f;
-    float overcast = 0.0f;  // 0 clear .. 1 a grey cloud deck hiding the sun
-    bool operator==(const SkyState&) const = default;
-};
 
 // A light along a segment (an energy beam): shaders/common/lighting.glsl's LineLights.
 struct LineLight {
@@ -48,27 +38,22 @@ public:
     SceneLighting(int env_size, int shadow_size, int sky_size = 1024);
 
     // Sky uniforms only (sky background, environment faces).
-    void apply_sky(const gl::Program& program) const;
-    // Everything a lit surface needs.
-    void apply(const gl::Program& program) const;
+    static void apply_sky(const gl::Program& program, const SkyState& sky);
+    // Everything a lit surface needs: the frame's sky and the maps' matrices with the
+    // textures they belong to.
+    void apply(const gl::Program& program, const FrameData& frame) const;
 
-    SkyState sky;
-    WeatherLook weather;  // this frame's (set_weather)
-    // The frame's weather, and the sky under it: cloud greys the sky and weakens the sun.
-    void set_weather(const WeatherLook& look);
-    glm::mat4 shadow_view_proj{1.0f};
     gl::Texture env_cube;
-    gl::Texture shadow_map;
-    // Top-down depth of the props (SkyOcclusionPass): what lies under a roof sees no
-    // sky. Cleared to "nothing above" until the pass draws it.
-    glm::mat4 sky_view_proj{1.0f};
+    gl::Texture shadow_map;  // from FrameData::sun_shadow_view_proj
+    // Top-down depth of the props (SkyOcclusionPass), from FrameData::sky_occlusion_view_proj:
+    // what lies under a roof sees no sky. Cleared to "nothing above" until the pass draws it.
     gl::Texture sky_map;
     float env_max_lod() const { return float(env_levels_ - 1); }
     // The irradiance in a car's cabin under its roof (over pi: a lining's albedo times it
     // is its radiance), which sees the sky and the sun only through the glass: the sky's
     // light that the windows let in and the sun's when it is low enough to come through
     // them, both passed on by the seats and the dashboard. Cloud darkens both.
-    glm::vec3 cabin_daylight() const;
+    static glm::vec3 cabin_daylight(const SkyState& sky);
     // A new shadow map of `size` texels on a side (nothing drawn in it yet).
     void resize_shadow_map(int size);
     // The line lights of the frame (none unless set; beyond kMaxLineLights ignored).

@@ -2,10 +2,6 @@
 
 #include "effects/gl/PipelineState.h"
 
-#include <algorithm>
-
-#include <glm/gtc/matrix_transform.hpp>
-
 namespace effects {
 
 SkyOcclusionPass::SkyOcclusionPass()
@@ -19,14 +15,6 @@ void SkyOcclusionPass::render(const FrameContext& frame) {
     const SceneGeometry& geometry = frame.scene.geometry;
     const glm::vec3 lo = geometry.props_min(), hi = geometry.props_max();
     if (!(hi.x > lo.x && hi.z > lo.z)) return;  // no props: nothing above anything
-    // Looking straight down from above the highest prop over their square footprint.
-    const glm::vec2 centre(0.5f * (lo.x + hi.x), 0.5f * (lo.z + hi.z));
-    const float half = 0.5f * std::max(hi.x - lo.x, hi.z - lo.z) + 1.0f;
-    const float top = hi.y + 1.0f;
-    const glm::mat4 view =
-        glm::lookAt(glm::vec3(centre.x, top, centre.y), glm::vec3(centre.x, top - 1.0f, centre.y), glm::vec3(0, 0, -1));
-    const glm::mat4 proj = glm::ortho(-half, half, -half, half, 0.0f, top - lo.y + 1.0f);
-    lighting.sky_view_proj = proj * view;
 
     fbo_.attach_depth(lighting.sky_map);
     fbo_.set_draw_buffers({});
@@ -38,7 +26,7 @@ void SkyOcclusionPass::render(const FrameContext& frame) {
     gl::PipelineScope state({.depth_test = true, .depth_write = true});
     glClear(GL_DEPTH_BUFFER_BIT);
     program_.use();
-    program_.set("u_view_proj", lighting.sky_view_proj);
+    program_.set("u_view_proj", frame.data.sky_occlusion_view_proj);
     geometry.draw_props(program_, true);
 }
 

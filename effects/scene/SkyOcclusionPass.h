@@ -5,9 +5,10 @@
 
 namespace effects {
 
-// The sky's occlusion map: an orthographic depth render of the props straight down,
-// once (they never move), so that lit surfaces under a roof (the warehouse's floor,
-// walls and crates, under the pier) lose the sky's ambient light and reflection.
+// The sky's occlusion map: an orthographic depth render of the props straight down
+// (FrameData::sky_occlusion_view_proj), once (they never move), so that lit surfaces
+// under a roof (the warehouse's floor, walls and crates, under the pier) lose the sky's
+// ambient light and reflection.
 class SkyOcclusionPass final : public Pass {
 public:
     SkyOcclusionPass();

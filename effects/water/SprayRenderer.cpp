@@ -39,7 +39,7 @@ void SprayRenderer::draw(const FrameContext& frame, std::span<const SprayDrop> d
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, t.width(), t.height());
     program_.use();
-    frame.scene.lighting.apply(program_);
+    frame.scene.lighting.apply(program_, frame.data);
     program_.set("u_view_proj", cam.view_proj);
     program_.set("u_eye", cam.eye);
     program_.set("u_cam_right", glm::vec3(inv_view[0]));

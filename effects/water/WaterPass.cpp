@@ -82,7 +82,7 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     // Shading, once per water pixel.
     shading_.select_programs(frame.scene.quality, frame.scene.lighting.has_line_lights());
     for (const gl::Program* p : {&shading_.sea_program(), &shading_.sheet_program()}) {
-        frame.scene.lighting.apply(*p);
+        frame.scene.lighting.apply(*p, frame.data);
         p->set("u_inv_view_proj", cam.inv_view_proj);
         p->set("u_eye", cam.eye);
         p->set("u_time_s", time_s);

@@ -129,7 +129,7 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
         glViewport(0, 0, width, height);
         effects::gl::PipelineScope state({.depth_test = true, .depth_write = true, .cull_back_faces = true});
         mesh.use();
-        scene.lighting.apply(mesh);
+        scene.lighting.apply(mesh, frame.data);
         mesh.set("u_view_proj", camera.view_proj);
         mesh.set("u_eye", camera.eye);
         mesh.set("u_surface", 0);

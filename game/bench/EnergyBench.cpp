@@ -18,6 +18,7 @@
 #include "effects/gl/Program.h"
 #include "effects/scene/FrameContext.h"
 #include "game/bench/BenchSupport.h"
+#include "game/stage/RenderStage.h"
 #include "sim/weapon/EnergyField.h"
 #include "sim/world/World.h"
 
@@ -225,19 +226,16 @@ void bench_full_screen(BenchReport& report, bool quick) {
     const int frames = quick ? 3 : 10;
     sim::LevelDesc level;
     level.id = "energy_bench";
-    const sim::World world(level);
-    effects::SceneDesc desc;
-    effects::SceneResources scene{desc, effects::SceneGeometry(desc, world.terrain()), effects::SceneLighting(16, 256),
-                                  effects::SceneTargets{}};
-    scene.targets.resize(W, H);
+    // The scene's targets only: the bench draws the pass with its own segments.
+    RenderStage stage(level, {.width = W, .height = H, .passes = {}, .environment_size = 16, .shadow_map_size = 256});
+    effects::SceneResources& scene = stage.scene();
     const float far = 1.0f;
     glClearNamedFramebufferfv(scene.targets.scene().id(), GL_DEPTH, 0, &far);  // sky everywhere
     sim::CameraView v;
     v.eye = {0.2f, 0.1f, 0.0f};
     v.target = {0.0f, 0.0f, -10.0f};
     const effects::Camera cam = effects::make_camera(v, float(W) / float(H));
-    const effects::FrameData data;  // the bench draws its own segments
-    const effects::FrameContext frame{world, cam, scene, {0, W, H}, 0.0, effects::capture_poses(world), data};
+    const effects::FrameContext frame = stage.context(cam);
     std::vector<EnergySegment> shot;
     glm::vec3 p(0.0f, 0.0f, 3.0f);
     for (int i = 0; i < 4; ++i) {

@@ -1,18 +1,15 @@
 #pragma once
-// A stage for drawing some of the frame's passes outside the game's renderer: a level's
-// world and scene resources, the passes picked by name (run in the order of
-// effects/PassList.cpp), an LDR output, and a camera of the caller's choosing. The
-// render tests and the benches draw through it; a pass added to the game's frame shows
-// up here for those that ask for it, and in no one else's pixels.
-#include <functional>
-#include <memory>
+// A stage for drawing some of the frame's passes outside the game's loop: a level's
+// session, a renderer holding the passes picked by name (run in the order of
+// effects/PassList.cpp, as the game runs them), an LDR output, and a camera of the
+// caller's choosing. The render tests and the benches draw through it; a pass added to
+// the game's frame shows up here for those that ask for it, and in no one else's pixels.
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
 
-#include "effects/PassList.h"
-#include "effects/Quality.h"
-#include "effects/scene/FrameContext.h"
+#include "effects/Renderer.h"
 #include "game/capture/FrameCapture.h"
 #include "game/session/GameSession.h"
 
@@ -28,15 +25,8 @@ struct StageOptions {
 // effect's test reads its own pixels (the FXAA test turns it on).
 effects::QualitySettings stage_quality(const StageOptions& options);
 
-// What one frame does differently from the stage's default.
-struct StageFrame {
-    effects::PassSet skip;  // held passes left out of this frame
-    double time_s = 0.0;    // effects::FrameContext::time_s
-    // The passes in `replaced` are drawn by `replacement` instead, in their place: a
-    // caller's own view of the sim (a pass's draw(frame, view)).
-    effects::PassSet replaced;
-    std::function<void(const effects::FrameContext&)> replacement;
-};
+// What one frame does differently from the stage's default (its camera is the caller's).
+using StageFrame = effects::FrameRequest;
 
 class RenderStage {
 public:
@@ -44,17 +34,25 @@ public:
     // A level made in code: no models, props or dust, only the sim's terrain.
     RenderStage(const sim::LevelDesc& level, StageOptions options);
     RenderStage(GameSession session, StageOptions options);
-    RenderStage(const RenderStage&) = delete;  // scene_ refers into session_
+    RenderStage(const RenderStage&) = delete;  // the renderer refers into session_
     RenderStage& operator=(const RenderStage&) = delete;
 
     int width() const { return width_; }
     int height() const { return height_; }
     effects::Camera camera(const sim::CameraView& view) const;
-    // A frame from `camera` (its data gathered from the world now).
+    // A frame from `camera`, its data gathered from the world now, no pass run: for a
+    // caller that draws a pass's own view (valid until the next frame).
     effects::FrameContext context(const effects::Camera& camera, double time_s = 0.0);
 
-    // Runs the held passes, less the frame's skipped ones, in the game's order.
+    // Runs the held passes, less the frame's skipped ones, through the renderer.
     void draw(const effects::Camera& camera, const StageFrame& f = {});
+
+    // The weather every frame is drawn under, instead of the world's (none: the world's).
+    void set_weather(std::optional<effects::WeatherLook> weather) { weather_ = weather; }
+    // The sky every frame is drawn under, instead of the sky under the weather.
+    void set_sky(std::optional<effects::SkyState> sky) { sky_ = sky; }
+    // The sky the next frame is drawn under.
+    effects::SkyState sky() const;
 
     // The last frame's output (after the tonemap), scene colour (HDR) and window depth.
     ImageRGBA8 ldr() const { return output_.read(); }
@@ -64,25 +62,24 @@ public:
     // A held pass, for callers that tweak its look or read what it drew.
     template <class P>
     P& pass() {
-        for (auto& held : passes_)
-            if (auto* typed = dynamic_cast<P*>(held.pass.get())) return *typed;
+        for (auto& held : renderer_.passes())
+            if (auto* typed = dynamic_cast<P*>(held.get())) return *typed;
         throw std::logic_error("the stage does not hold that pass");
     }
     sim::World& world() { return *session_.world; }
-    effects::SceneResources& scene() { return scene_; }
+    effects::SceneResources& scene() { return renderer_.resources(); }
+    effects::Renderer& renderer() { return renderer_; }
     const FrameCapture& output() const { return output_; }
 
 private:
+    effects::FrameRequest request(const effects::Camera& camera, StageFrame f) const;
+
     int width_, height_;
     GameSession session_;
-    effects::SceneResources scene_;
-    effects::FrameData data_;
-    struct HeldPass {
-        size_t index;  // in the pass table
-        std::unique_ptr<effects::Pass> pass;
-    };
-    std::vector<HeldPass> passes_;  // in the game's order
+    effects::Renderer renderer_;
     FrameCapture output_;
+    std::optional<effects::WeatherLook> weather_;
+    std::optional<effects::SkyState> sky_;
 };
 
 }  // namespace game
