@@ -1,6 +1,6 @@
 #pragma once
-// The frame's shared render targets: HDR colour, world normals and depth that the
-// opaque passes write, a copy of colour and depth that the water refracts (the fluid
+// The frame's shared render targets: HDR colour, depth and (when asked) world normals
+// that the opaque passes write, a copy of colour and depth that the water refracts (the fluid
 // and the rain keep copies of their own), the tone-mapped display image and its
 // anti-aliased copy.
 #include "effects/gl/Framebuffer.h"
@@ -13,6 +13,11 @@ public:
     void resize(int width, int height);
     // Copies colour and depth so that later passes can sample them while drawing.
     void copy_scene();
+    // Whether the scene's framebuffer draws world normals (its second draw buffer): only
+    // an EXR capture reads them, so they are left out unless asked for (off at first).
+    // The passes drawing into it compile their normals output in or out to match.
+    void write_normals(bool on);
+    bool writes_normals() const { return writes_normals_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -33,7 +38,10 @@ public:
     const gl::Texture& antialiased() const { return antialiased_; }
 
 private:
+    void set_scene_draw_buffers();
+
     int width_ = 0, height_ = 0;
+    bool writes_normals_ = false;
     gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_, display_, antialiased_;
     gl::Framebuffer scene_fbo_, copy_fbo_, display_fbo_, antialiased_fbo_;
 };
