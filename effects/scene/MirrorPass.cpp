@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
-#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "effects/gl/EmptyVertexArray.h"
 #include "effects/gl/PipelineState.h"
 #include "sim/player/Player.h"
 
