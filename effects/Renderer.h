@@ -67,6 +67,9 @@ public:
     const SceneTargets& targets() const { return resources_.targets; }
     SceneResources& resources() { return resources_; }
     const FrameData& frame_data() const { return data_; }  // the last frame's
+    // Whether the frame draws world normals into targets() (SceneTargets::write_normals):
+    // off unless a capture reads them.
+    void write_normals(bool on) { resources_.targets.write_normals(on); }
     ParamRegistry& params() { return params_; }
     const std::vector<gl::PassTime>& pass_times() const { return timer_->results(); }
     const std::vector<std::unique_ptr<Pass>>& passes() const { return passes_; }

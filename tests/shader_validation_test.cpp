@@ -87,8 +87,8 @@ struct TempDir {
 };
 
 // The #define sets programs compile shaders with: each preset's (shader_defines), with
-// and without line lights, and those plus GROUND and a road count, as OpaquePass builds
-// the ground.
+// and without line lights, and those plus GROUND and a road count, as LitScene builds
+// the ground; and the high preset's with the scene's normals written (SCENE_NORMALS).
 std::vector<std::vector<std::string>> preset_define_sets() {
     std::vector<std::vector<std::string>> sets;
     for (effects::Quality q : {effects::Quality::Low, effects::Quality::Medium, effects::Quality::High})
@@ -99,6 +99,9 @@ std::vector<std::vector<std::string>> preset_define_sets() {
             defines.push_back("ROAD_COUNT 2");
             sets.push_back(defines);
         }
+    std::vector<std::string> normals = effects::shader_defines(effects::quality_settings(effects::Quality::High), false);
+    normals.insert(normals.end(), {"GROUND", "ROAD_COUNT 2", "SCENE_NORMALS"});
+    sets.push_back(normals);
     return sets;
 }
 

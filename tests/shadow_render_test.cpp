@@ -43,6 +43,7 @@ float luma(const float* rgb) { return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.07
 
 ShadowedAndOpen render_both(RenderStage& stage, const sim::CameraView& view) {
     ShadowedAndOpen r;
+    stage.scene().targets.write_normals(true);  // read below; off unless asked
     r.image = stage.render(view);
     const game::ImageRGBA32F shadowed = stage.hdr();
     const auto normals = game::read_framebuffer_rgba32f(stage.scene().targets.scene().id(), GL_COLOR_ATTACHMENT1, W, H);

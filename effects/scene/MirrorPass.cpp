@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
-#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "effects/gl/EmptyVertexArray.h"
 #include "effects/gl/PipelineState.h"
 #include "sim/player/Player.h"
 
@@ -34,8 +31,7 @@ struct MirrorPass::View {
 };
 
 MirrorPass::MirrorPass()
-    : objects_("mirror.objects", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"}),
-      sky_(gl::Program::from_files("mirror.sky", {"common/fullscreen.vert.glsl", "scene/sky.frag.glsl"})),
+    : scene_("mirror"),
       glass_program_(gl::Program::from_files("mirror.glass", {"scene/mesh.vert.glsl", "scene/mirror_glass.frag.glsl"})) {}
 
 std::optional<MirrorPass::Glass> MirrorPass::find_glass(const SceneDesc& desc) {
@@ -137,46 +133,30 @@ void MirrorPass::draw_behind(const FrameContext& frame, const View& v) {
     cheap.soft_shadows = false;
     cheap.env_reflection = false;
     cheap.ground_detail = false;
-    const bool line_lights = false;
-    const gl::Program& objects = objects_.get(cheap, line_lights);
-    if (!ground_)
-        ground_.emplace("mirror.ground", std::vector<std::string_view>{"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"},
-                        std::vector<std::string>{"GROUND", "ROAD_COUNT " +
-                                                               std::to_string(frame.scene.geometry.ground_road_count())});
-    const gl::Program& ground = ground_->get(cheap, line_lights);
-    for (const gl::Program* p : {&objects, &ground}) {
-        frame.scene.lighting.apply(*p, frame.data);
-        p->set("u_view_proj", v.camera.view_proj);
-        p->set("u_eye", v.camera.eye);
-    }
-    frame.scene.geometry.apply_ground(ground);
-    ground.set("u_wetness", frame.data.weather.road_wetness);
+    const LitScene::Programs p = scene_.programs(frame, cheap, false, false, v.camera);
     // The car is left out: the mirror looks out of it, through where its rear window is.
     const Frustum behind(v.camera.view_proj);
-    frame.scene.geometry.draw(objects, ground, frame.poses, SceneGeometry::Use::Shading, behind, {},
+    frame.scene.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, behind, {},
                               SceneGeometry::Car::LeftOut);
 
-    objects.use();
-    objects.set("u_model", glm::mat4(1.0f));
-    objects.set("u_normal_matrix", glm::mat3(1.0f));
-    objects.set("u_tint", kSeaTint);
-    frame.scene.geometry.sea().draw(objects, false);
-    objects.set("u_tint", glm::vec4(1.0f));
+    p.objects.use();
+    p.objects.set("u_model", glm::mat4(1.0f));
+    p.objects.set("u_normal_matrix", glm::mat3(1.0f));
+    p.objects.set("u_tint", kSeaTint);
+    frame.scene.geometry.sea().draw(p.objects, false);
+    p.objects.set("u_tint", glm::vec4(1.0f));
 
-    gl::apply({.depth_test = true, .depth_func = GL_LEQUAL});
-    sky_.use();
-    SceneLighting::apply_sky(sky_, frame.data.sky);
-    sky_.set("u_inv_view_proj", v.camera.inv_view_proj);
-    gl::bind_empty_vertex_array();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    scene_.draw_sky(frame.data, v.camera, false);
 }
 
 void MirrorPass::draw_glass(const FrameContext& frame, const View& v) {
-    // The glass again, over itself as the opaque pass drew it: only its own pixels.
+    // The glass again, over itself as the opaque pass drew it: only its own pixels, and
+    // only their colour (the opaque pass wrote their normals, when drawn).
     SceneTargets& t = frame.scene.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state({.depth_test = true, .depth_func = GL_LEQUAL, .offset_factor = -1.0f, .offset_units = -1.0f});
+    if (t.writes_normals()) glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glass_program_.use();
     glass_program_.set("u_view_proj", frame.camera.view_proj);
     glass_program_.set("u_model", v.body);

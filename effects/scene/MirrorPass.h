@@ -8,7 +8,7 @@
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 #include "effects/scene/GpuModel.h"
-#include "effects/scene/LitProgram.h"
+#include "effects/scene/LitScene.h"
 #include "effects/scene/Pass.h"
 
 namespace effects {
@@ -40,9 +40,8 @@ private:
     void draw_behind(const FrameContext& frame, const View& view);
     void draw_glass(const FrameContext& frame, const View& view);
 
-    LitProgram objects_;
-    std::optional<LitProgram> ground_;  // made at the first frame: it needs the level's road count
-    gl::Program sky_, glass_program_;
+    LitScene scene_;
+    gl::Program glass_program_;
     bool looked_up_ = false;
     std::optional<Glass> glass_;
     std::unique_ptr<GpuModel> glass_model_;

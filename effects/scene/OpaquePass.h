@@ -1,14 +1,11 @@
 #pragma once
-#include <optional>
-
-#include "effects/gl/Program.h"
-#include "effects/scene/LitProgram.h"
+#include "effects/scene/LitScene.h"
 #include "effects/scene/Pass.h"
 
 namespace effects {
 
 // The lit opaque scene into the HDR targets: sky background, terrain, props,
-// vehicles and thrown objects.
+// vehicles and thrown objects (and their normals, when SceneTargets draws them).
 class OpaquePass final : public Pass {
 public:
     OpaquePass();
@@ -16,9 +13,7 @@ public:
     void render(const FrameContext& frame) override;
 
 private:
-    LitProgram objects_;
-    std::optional<LitProgram> ground_;  // made at the first frame: it needs the level's road count
-    gl::Program sky_;
+    LitScene scene_;
 };
 
 }  // namespace effects

@@ -23,7 +23,7 @@ void SceneTargets::resize(int width, int height) {
     scene_fbo_.attach_colour(0, colour_);
     scene_fbo_.attach_colour(1, normal_);
     scene_fbo_.attach_depth(depth_);
-    scene_fbo_.set_draw_buffers({0, 1});
+    set_scene_draw_buffers();
     scene_fbo_.check_complete();
     copy_fbo_ = gl::Framebuffer::create("scene.copy");
     copy_fbo_.attach_colour(0, colour_copy_);
@@ -34,6 +34,18 @@ void SceneTargets::resize(int width, int height) {
     display_fbo_ = gl::Framebuffer{};
     antialiased_ = gl::Texture{};
     antialiased_fbo_ = gl::Framebuffer{};
+}
+
+void SceneTargets::write_normals(bool on) {
+    writes_normals_ = on;
+    if (scene_fbo_.id() != 0) set_scene_draw_buffers();
+}
+
+void SceneTargets::set_scene_draw_buffers() {
+    if (writes_normals_)
+        scene_fbo_.set_draw_buffers({0, 1});
+    else
+        scene_fbo_.set_draw_buffers({0});
 }
 
 const gl::Framebuffer& SceneTargets::display_fbo() {

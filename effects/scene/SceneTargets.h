@@ -1,8 +1,8 @@
 #pragma once
-// The frame's shared render targets: HDR colour, world normals and depth that the
-// opaque passes write, one copy of colour and depth that every refracting pass reads (the
-// water as the scene_copy pass makes it; the fluid and the rain bring its colour up to
-// date first), the tone-mapped display image and its anti-aliased copy.
+// The frame's shared render targets: HDR colour, depth and (when asked) world normals
+// that the opaque passes write, one copy of colour and depth that every refracting pass
+// reads (the water as the scene_copy pass makes it; the fluid and the rain bring its
+// colour up to date first), the tone-mapped display image and its anti-aliased copy.
 #include <cstdint>
 
 #include <glm/vec4.hpp>
@@ -27,6 +27,11 @@ public:
     // them is rebuilt when the generation it was built for differs (a size can come back,
     // and a texture name can be reused, while the pass was not drawing).
     uint64_t generation() const { return generation_; }
+    // Whether the scene's framebuffer draws world normals (its second draw buffer): only
+    // an EXR capture reads them, so they are left out unless asked for (off at first).
+    // The passes drawing into it compile their normals output in or out to match.
+    void write_normals(bool on);
+    bool writes_normals() const { return writes_normals_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -47,8 +52,11 @@ public:
     const gl::Texture& antialiased() const { return antialiased_; }
 
 private:
+    void set_scene_draw_buffers();
+
     int width_ = 0, height_ = 0;
     uint64_t generation_ = 0;
+    bool writes_normals_ = false;
     gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_, display_, antialiased_;
     gl::Framebuffer scene_fbo_, copy_fbo_, display_fbo_, antialiased_fbo_;
 };

@@ -1,5 +1,6 @@
 #include "game/capture/FrameCapture.h"
 
+#include "game/capture/CaptureError.h"
 #include "game/capture/ExrWriter.h"
 #include "game/capture/Readback.h"
 
@@ -19,6 +20,9 @@ ImageRGBA8 FrameCapture::read() const { return read_framebuffer_rgba8(fbo_.id(),
 
 void FrameCapture::write_scene_exr(const std::filesystem::path& path, const effects::SceneTargets& t, float near_m,
                              float far_m) {
+    if (!t.writes_normals())
+        throw CaptureError("cannot write " + path.string() +
+                           ": the scene's normals are not drawn (Renderer::write_normals(true) before rendering)");
     const int w = t.width(), h = t.height();
     ImageRGBA32F colour = read_framebuffer_rgba32f(t.scene().id(), GL_COLOR_ATTACHMENT0, w, h);
     ImageRGBA32F normal = read_framebuffer_rgba32f(t.scene().id(), GL_COLOR_ATTACHMENT1, w, h);

@@ -16,7 +16,8 @@ public:
 
     effects::RenderOutput output() const { return {fbo_.id(), width_, height_}; }
     ImageRGBA8 read() const;
-    // Colour (HDR, linear), depth (linear metres from the eye) and world normals.
+    // Colour (HDR, linear), depth (linear metres from the eye) and world normals; throws
+    // CaptureError if the targets do not draw normals (SceneTargets::write_normals).
     static void write_scene_exr(const std::filesystem::path& path, const effects::SceneTargets& targets, float near_m,
                           float far_m);
 

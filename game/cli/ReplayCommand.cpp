@@ -100,6 +100,8 @@ int replay_command(const std::vector<std::string>& argv) {
         charge_frame_memory(header.frame_width, header.frame_height, memory);
         context = std::make_unique<HeadlessContext>();
         renderer = std::make_unique<effects::Renderer>(session.level.scene, *session.world);
+        // Only the EXR reads the scene's normals.
+        renderer->write_normals(args.flag("--exr") && args.value("--out"));
         capture = std::make_unique<FrameCapture>(int(header.frame_width), int(header.frame_height));
     }
 

@@ -29,7 +29,9 @@ uniform float u_sea_level;
 uniform float u_wetness;  // the road's wetness from the sim's weather: 0 dry .. 1 running with water
 
 layout(location = 0) out vec4 o_colour;
+#ifdef SCENE_NORMALS  // only when SceneTargets draws them (an EXR capture, a test)
 layout(location = 1) out vec4 o_normal;
+#endif
 
 float hash12(vec2 p) {
     vec3 p3 = fract(vec3(p.xyx) * 0.1031);
@@ -99,5 +101,7 @@ void main() {
     vec3 c = shade_surface(base, roughness, u_metallic, v_world_pos, n, u_eye) + u_emissive +
              base * (1.0 - u_metallic) * (u_cabin_lining * u_cabin_daylight);
     o_colour = vec4(apply_fog(c, v_world_pos, u_eye), 1.0);
+#ifdef SCENE_NORMALS
     o_normal = vec4(n, 1.0);
+#endif
 }

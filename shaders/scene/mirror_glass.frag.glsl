@@ -1,7 +1,6 @@
 #version 450 core
 // The rear-view mirror's glass showing MirrorPass's picture of the view behind.
 in vec3 v_world_pos;
-in vec3 v_normal;
 in vec4 v_color;
 
 uniform sampler2D u_picture;  // from the glass looking back out of the car
@@ -10,7 +9,6 @@ uniform vec3 u_across;        // the driver's right, over the glass's half width
 uniform vec3 u_up;            // up, over its half height
 
 layout(location = 0) out vec4 o_colour;
-layout(location = 1) out vec4 o_normal;
 
 const float kReflectance = 0.85;  // a silvered glass mirror
 
@@ -20,5 +18,4 @@ void main() {
     // back has it on its left, so the picture is read right to left.
     vec2 uv = vec2(0.5 - 0.5 * dot(d, u_across), 0.5 + 0.5 * dot(d, u_up));
     o_colour = vec4(texture(u_picture, uv).rgb * kReflectance, 1.0);
-    o_normal = vec4(normalize(v_normal), 1.0);
 }

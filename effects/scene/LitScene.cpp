@@ -1,0 +1,45 @@
+#include "effects/scene/LitScene.h"
+
+#include <utility>
+#include <vector>
+
+#include "effects/gl/EmptyVertexArray.h"
+#include "effects/gl/PipelineState.h"
+
+namespace effects {
+
+LitScene::LitScene(std::string label)
+    : label_(std::move(label)), objects_(label_ + ".objects", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"}) {}
+
+LitScene::Programs LitScene::programs(const FrameContext& frame, const QualitySettings& quality, bool line_lights,
+                                      bool normals, const Camera& camera) {
+    if (!ground_)
+        ground_.emplace(label_ + ".ground", std::vector<std::string_view>{"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"},
+                        std::vector<std::string>{"GROUND", "ROAD_COUNT " + std::to_string(frame.scene.geometry.ground_road_count())});
+    const gl::Program& objects = objects_.get(quality, line_lights, normals);
+    const gl::Program& ground = ground_->get(quality, line_lights, normals);
+    for (const gl::Program* p : {&objects, &ground}) {
+        frame.scene.lighting.apply(*p, frame.data);
+        p->set("u_view_proj", camera.view_proj);
+        p->set("u_eye", camera.eye);
+    }
+    frame.scene.geometry.apply_ground(ground);
+    ground.set("u_wetness", frame.data.weather.road_wetness);
+    return {objects, ground};
+}
+
+void LitScene::draw_sky(const FrameData& data, const Camera& camera, bool normals) {
+    std::optional<gl::Program>& sky = sky_[normals ? 1 : 0];
+    if (!sky)
+        sky = gl::Program::from_files(label_ + ".sky" + (normals ? ".normals" : ""),
+                                      {"common/fullscreen.vert.glsl", "scene/sky.frag.glsl"},
+                                      normals ? std::vector<std::string>{"SCENE_NORMALS"} : std::vector<std::string>{});
+    gl::apply({.depth_test = true, .depth_func = GL_LEQUAL});
+    sky->use();
+    SceneLighting::apply_sky(*sky, data.sky);
+    sky->set("u_inv_view_proj", camera.inv_view_proj);
+    gl::bind_empty_vertex_array();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace effects
