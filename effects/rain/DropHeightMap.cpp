@@ -55,7 +55,8 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
                            const HeightCompression& c) {
     if (gl::upload_growing(instances_, "rain.metaballs", std::as_bytes(metaballs)))
         vao_.vertex_buffer(0, instances_, 0, sizeof(RainMetaball));
-    wet_.set(drops_by_tile(metaballs, glass_size_m, width_, height_, radius_scale, c.threshold), width_, height_);
+    tiles_ = drops_by_tile(metaballs, glass_size_m, width_, height_, radius_scale, c.threshold);
+    wet_.set(tiles_, width_, height_);
 
     gl::PipelineScope state(gl::kFullScreen);
     glViewport(0, 0, width_, height_);
@@ -66,6 +67,7 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     const float zero[4] = {0, 0, 0, 0}, unmarked = 0.0f;
     glClearBufferfv(GL_COLOR, 0, zero);
     if (!metaballs.empty()) {
+        gl::apply({.depth_write = true});  // a depth clear writes only through the depth mask
         glClearBufferfv(GL_DEPTH, 0, &unmarked);
         gl::apply({.depth_test = true, .depth_write = true, .depth_func = GL_ALWAYS, .colour_write = false});
         mark_.use();

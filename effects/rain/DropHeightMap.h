@@ -59,6 +59,8 @@ public:
 
     // rg: the normal's u and v components (z is implied), b: height in mm, a: 1 on water.
     const gl::Texture& surface() const { return surface_; }
+    // The last update's tiles: `wet` says where the surface can hold water.
+    const DropTiles& tiles() const { return tiles_; }
     int width() const { return width_; }
     int height() const { return height_; }
 
@@ -72,6 +74,7 @@ private:
     gl::Program splat_, shape_, normals_, mark_;
     gl::VertexArray vao_;
     gl::Buffer instances_;
+    DropTiles tiles_;
     WetTiles wet_;
 };
 
