@@ -454,12 +454,13 @@ TEST_F(RainLookTest, ShadingOnlyTheWetCellsChangesNoPixel) {
     view_.film.assign(size_t(glass.cell_count()), 0);
     const int row = glass.rows() / 3;
     for (int col = 0; col < glass.cols() / 2; ++col) view_.film[size_t(row * glass.cols() + col)] = 3;  // barely visible
-    paint({1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, int(centre_.y));
     effects::RainPass& pass = stage_->pass<effects::RainPass>();
     pass.look().wet_cells_only = false;
+    paint({1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, int(centre_.y));  // each time: the pass draws into the scene
     const game::ImageRGBA32F all = draw();
     ASSERT_EQ(pass.cells_drawn(), pass.cells_total());
     pass.look().wet_cells_only = true;
+    paint({1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, int(centre_.y));
     const game::ImageRGBA32F wet = draw();
     EXPECT_LT(pass.cells_drawn(), pass.cells_total() / 2) << "most of the glass is dry";
     size_t differing = 0;
