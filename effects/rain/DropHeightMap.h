@@ -66,7 +66,7 @@ public:
 
 private:
     int width_, height_;
-    gl::Texture profile_, surface_;
+    gl::Texture surface_;
     gl::Texture sums_;     // sums over drops of N, N^2 R (mm), N^2 x^2, N^2
     gl::Texture heights_;  // R32F mm: the normals pass gathers a texel and its neighbours at once
     gl::Framebuffer sums_fbo_, heights_fbo_, surface_fbo_;
