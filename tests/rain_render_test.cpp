@@ -441,6 +441,33 @@ TEST_F(RainLookTest, ARunnersStreakIsAFaintFilm) {
     EXPECT_EQ(at(img, cx - int(3.0f * radius_px_.x), cy)[3], 0.0f);
 }
 
+TEST_F(RainLookTest, ShadingOnlyTheWetCellsChangesNoPixel) {
+    // A drop, a streak of film across the glass and both blades: the cells left out
+    // must be ones the shader would have discarded whole.
+    const sim::RainSim& rain = stage_->world().get<sim::RainSim>();
+    const sim::GlassSurface& glass = *view_.glass;
+    for (const sim::WiperBlade& b : rain.blades())
+        view_.blades.push_back({b.params().pivot_m, b.direction(), b.params().inner_m, b.params().outer_m});
+    view_.film_cols = glass.cols();
+    view_.film_rows = glass.rows();
+    view_.film_cell_m = glass.cell_m();
+    view_.film.assign(size_t(glass.cell_count()), 0);
+    const int row = glass.rows() / 3;
+    for (int col = 0; col < glass.cols() / 2; ++col) view_.film[size_t(row * glass.cols() + col)] = 3;  // barely visible
+    effects::RainPass& pass = stage_->pass<effects::RainPass>();
+    pass.look().wet_cells_only = false;
+    paint({1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, int(centre_.y));  // each time: the pass draws into the scene
+    const game::ImageRGBA32F all = draw();
+    ASSERT_EQ(pass.cells_drawn(), pass.cells_total());
+    pass.look().wet_cells_only = true;
+    paint({1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, int(centre_.y));
+    const game::ImageRGBA32F wet = draw();
+    EXPECT_LT(pass.cells_drawn(), pass.cells_total() / 2) << "most of the glass is dry";
+    size_t differing = 0;
+    for (size_t k = 0; k < all.pixels.size(); ++k) differing += all.pixels[k] != wet.pixels[k];
+    EXPECT_EQ(differing, 0u) << "of " << all.pixels.size() << " channels";
+}
+
 TEST_F(RainRenderTest, TheChaseViewDoesNotDrawTheRain) {
     auto s = parked_in_rain(4, 120, false);
     ASSERT_GT(s->world->get<sim::RainSim>().drops().size(), 50u);

@@ -2,13 +2,7 @@
 
 #include "effects/gl/PipelineState.h"
 
-#include <vector>
-
 namespace effects {
-
-namespace {
-constexpr int kProfileTexels = 256;
-}  // namespace
 
 DropHeightMap::DropHeightMap(int width, int height)
     : width_(width),
@@ -18,17 +12,6 @@ DropHeightMap::DropHeightMap(int width, int height)
       normals_(gl::Program::from_files("rain.normals", {"rain/tiles.vert.glsl", "rain/normals.frag.glsl"})),
       mark_(gl::Program::from_files("rain.mark", {"rain/tiles.vert.glsl", "rain/mark.frag.glsl"})),
       vao_(gl::VertexArray::create("rain.splat")) {
-    // N(h) = 1 / (1 + (h/R)^4) over h/R in [0, kMetaballReach], scaled per drop.
-    std::vector<float> profile(kProfileTexels);
-    for (int i = 0; i < kProfileTexels; ++i) {
-        float x = kMetaballReach * float(i) / float(kProfileTexels - 1);
-        profile[size_t(i)] = 1.0f / (1.0f + x * x * x * x);
-    }
-    profile_ = gl::Texture::create_2d("rain.profile", GL_R32F, kProfileTexels, 1);
-    profile_.upload<float>(GL_RED, GL_FLOAT, profile);
-    profile_.set_filter(GL_LINEAR, GL_LINEAR);
-    profile_.set_wrap(GL_CLAMP_TO_EDGE);
-
     sums_ = gl::Texture::create_2d("rain.sums", GL_RGBA16F, width, height);
     surface_ = gl::Texture::create_2d("rain.surface", GL_RGBA16F, width, height);
     heights_ = gl::Texture::create_2d("rain.heights", GL_R32F, width, height);
@@ -55,7 +38,8 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
                            const HeightCompression& c) {
     if (gl::upload_growing(instances_, "rain.metaballs", std::as_bytes(metaballs)))
         vao_.vertex_buffer(0, instances_, 0, sizeof(RainMetaball));
-    wet_.set(drops_by_tile(metaballs, glass_size_m, width_, height_, radius_scale, c.threshold), width_, height_);
+    tiles_ = drops_by_tile(metaballs, glass_size_m, width_, height_, radius_scale, c.threshold);
+    wet_.set(tiles_, width_, height_);
 
     gl::PipelineScope state(gl::kFullScreen);
     glViewport(0, 0, width_, height_);
@@ -66,6 +50,7 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
     const float zero[4] = {0, 0, 0, 0}, unmarked = 0.0f;
     glClearBufferfv(GL_COLOR, 0, zero);
     if (!metaballs.empty()) {
+        gl::apply({.depth_write = true});  // a depth clear writes only through the depth mask
         glClearBufferfv(GL_DEPTH, 0, &unmarked);
         gl::apply({.depth_test = true, .depth_write = true, .depth_func = GL_ALWAYS, .colour_write = false});
         mark_.use();
@@ -75,8 +60,6 @@ void DropHeightMap::update(std::span<const RainMetaball> metaballs, glm::vec2 gl
         splat_.set("u_glass_size_m", glass_size_m);
         splat_.set("u_radius_scale", radius_scale);
         splat_.set("u_reach", kMetaballReach);
-        splat_.set("u_profile", 0);
-        profile_.bind(0);
         vao_.bind();
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(metaballs.size()));
         gl::apply(gl::kFullScreen);

@@ -59,12 +59,14 @@ public:
 
     // rg: the normal's u and v components (z is implied), b: height in mm, a: 1 on water.
     const gl::Texture& surface() const { return surface_; }
+    // The last update's tiles: `wet` says where the surface can hold water.
+    const DropTiles& tiles() const { return tiles_; }
     int width() const { return width_; }
     int height() const { return height_; }
 
 private:
     int width_, height_;
-    gl::Texture profile_, surface_;
+    gl::Texture surface_;
     gl::Texture sums_;     // sums over drops of N, N^2 R (mm), N^2 x^2, N^2
     gl::Texture heights_;  // R32F mm: the normals pass gathers a texel and its neighbours at once
     gl::Framebuffer sums_fbo_, heights_fbo_, surface_fbo_;
@@ -72,6 +74,7 @@ private:
     gl::Program splat_, shape_, normals_, mark_;
     gl::VertexArray vao_;
     gl::Buffer instances_;
+    DropTiles tiles_;
     WetTiles wet_;
 };
 

@@ -9,6 +9,10 @@
 
 namespace effects {
 
+namespace {
+constexpr float kBladeHalfWidth_m = 0.008f;  // the rubber's, wider than the arm's (shaders/rain/windshield.frag.glsl)
+}  // namespace
+
 RainPass::RainPass(int height_map_width, int height_map_height)
     : height_map_(height_map_width, height_map_height),
       made_width_(height_map_width),
@@ -26,6 +30,7 @@ void RainPass::register_params(ParamRegistry& params) {
     params.add("rain", "sun glint", &look_.glint, 0.0f, 4.0f);
     params.add("rain", "wet streaks", &look_.film, 0.0f, 1.0f);
     params.add("rain", "height compression steps", &look_.compression_steps, 0, 5);
+    params.add("rain", "shade wet cells only", &look_.wet_cells_only);
 }
 
 void RainPass::render(const FrameContext& frame) {
@@ -112,9 +117,24 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     t.colour_copy().bind(1);
     behind_sampler_.bind(1);
     film_.bind(2);
-    mesh_->draw();
+    // Only the cells where the shader can draw: elsewhere it discards every pixel. A
+    // blade covers pixels up to its half width plus one pixel's footprint on the glass
+    // (fwidth): bounded here by 16 times the glass's mean metres per pixel across the
+    // screen, several times what the most oblique corner of the glass gives.
+    const float blade_reach_m = kBladeHalfWidth_m + std::max(0.02f, 16.0f * glass_size.x / float(t.width()));
+    shown_cells(mesh_->grid(), view,
+                {.tiles = &height_map_.tiles(),
+                 .map_width = height_map_.width(),
+                 .map_height = height_map_.height(),
+                 .film_strength = view.film.empty() ? 0.0f : look_.film,
+                 .blade_reach_m = blade_reach_m},
+                shown_);
+    if (!look_.wet_cells_only) std::fill(shown_.begin(), shown_.end(), uint8_t(1));
+    mesh_->draw(shown_);
     gl::Sampler::unbind(1);
 }
+
+size_t RainPass::cells_drawn() const { return size_t(std::count(shown_.begin(), shown_.end(), uint8_t(1))); }
 
 void RainPass::upload_film(const RainView& view) {
     const int cols = view.film.empty() ? 1 : view.film_cols, rows = view.film.empty() ? 1 : view.film_rows;

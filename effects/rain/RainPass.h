@@ -4,7 +4,9 @@
 // finished scene (after the water, before tonemapping), each drop refracting a blurred
 // copy of the scene and reflecting the sky, with the wiper blades on top. Not in the
 // driver's view, or with a dry glass and parked wipers, it does nothing at all.
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
@@ -27,6 +29,7 @@ struct RainLook {
     float glint = 1.5f;         // the sun's highlight, times the sun's radiance
     float film = 0.5f;          // how much the wet streak behind a runner blurs and brightens the view
     int compression_steps = 0;  // the seed's height compression, off (DropHeightMap.h)
+    bool wet_cells_only = true; // off: every cell of the windshield is shaded (WindshieldCells.h; the same image)
 };
 
 class RainPass final : public Pass {
@@ -41,6 +44,9 @@ public:
 
     RainLook& look() { return look_; }
     bool drew_last_frame() const { return drew_; }
+    // The windshield cells shaded last frame, of how many (WindshieldCells.h).
+    size_t cells_drawn() const;
+    size_t cells_total() const { return shown_.size(); }
 
 private:
     void upload_film(const RainView& view);
@@ -55,6 +61,7 @@ private:
     int film_cols_ = 0, film_rows_ = 0;
     gl::Framebuffer scene_colour_fbo_;
     uint64_t scene_generation_ = 0;  // SceneTargets::generation() scene_colour_fbo_ was built for
+    std::vector<uint8_t> shown_;  // the windshield cells drawn this frame (WindshieldCells.h)
     RainView view_;  // reused each frame
     RainLook look_;
     bool drew_ = false;

@@ -1,5 +1,6 @@
 #include "effects/rain/WindshieldMesh.h"
 
+#include <algorithm>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -17,8 +18,9 @@ struct Vertex {
 }  // namespace
 
 WindshieldMesh::WindshieldMesh(const sim::GlassSurface& glass, int columns, int rows)
-    : glass_(&glass), vao_(gl::VertexArray::create("rain.windshield")) {
-    const glm::vec2 size(glass.width_m(), glass.height_m());
+    : glass_(&glass), grid_{columns, rows, glm::vec2(glass.width_m(), glass.height_m())},
+      vao_(gl::VertexArray::create("rain.windshield")) {
+    const glm::vec2 size = grid_.glass_size_m;
     const float e = 1e-3f;
     std::vector<Vertex> verts;
     for (int j = 0; j <= rows; ++j)
@@ -37,7 +39,6 @@ WindshieldMesh::WindshieldMesh(const sim::GlassSurface& glass, int columns, int 
             uint32_t a = uint32_t(j * (columns + 1) + i), b = a + 1, c = a + uint32_t(columns + 1), d = c + 1;
             idx.insert(idx.end(), {a, b, d, a, d, c});
         }
-    index_count_ = int(idx.size());
     vertices_ = gl::Buffer::create<Vertex>("rain.windshield.vertices", verts, 0);
     indices_ = gl::Buffer::create<uint32_t>("rain.windshield.indices", idx, 0);
     vao_.attribute(0, 0, 3, GL_FLOAT, offsetof(Vertex, position));
@@ -48,9 +49,22 @@ WindshieldMesh::WindshieldMesh(const sim::GlassSurface& glass, int columns, int 
     vao_.element_buffer(indices_);
 }
 
-void WindshieldMesh::draw() const {
+void WindshieldMesh::draw(std::span<const uint8_t> shown) {
+    run_counts_.clear();
+    run_offsets_.clear();
+    const size_t cells = std::min(shown.size(), size_t(grid_.columns) * size_t(grid_.rows));
+    for (size_t c = 0; c < cells; ++c) {
+        if (!shown[c]) continue;
+        const bool continues = c % size_t(grid_.columns) != 0 && shown[c - 1];
+        if (continues) run_counts_.back() += 6;
+        else {
+            run_counts_.push_back(6);
+            run_offsets_.push_back(reinterpret_cast<const void*>(c * 6 * sizeof(uint32_t)));
+        }
+    }
+    if (run_counts_.empty()) return;
     vao_.bind();
-    glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+    glMultiDrawElements(GL_TRIANGLES, run_counts_.data(), GL_UNSIGNED_INT, run_offsets_.data(), GLsizei(run_counts_.size()));
 }
 
 }  // namespace effects

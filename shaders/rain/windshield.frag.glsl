@@ -29,9 +29,10 @@ uniform vec2 u_blade_span[2];  // inner, outer radius of the rubber
 in vec3 v_world;
 in vec2 v_uv_m;
 in vec3 v_tangent_u, v_tangent_v;
+flat in vec3 v_sky_overhead;  // sky_radiance straight up
 layout(location = 0) out vec4 o_colour;
 
-const float kBladeHalfWidth_m = 0.008;
+const float kBladeHalfWidth_m = 0.008;  // RainPass.cpp's cells to shade reach this far
 const float kArmHalfWidth_m = 0.005;
 
 // Coverage of the blades and their arms at this point of the glass (0..1, antialiased).
@@ -103,7 +104,7 @@ void main() {
     float up = max(r.y, 0.0), up2 = up * up, up8 = up2 * up2 * up2 * up2;
     // The sun's glint (a lobe wide enough to cover pixels of a small drop) and the
     // bright sky above on the drop's upper side.
-    vec3 glint = u_sun_radiance * (u_glint * mu32) + sky_radiance(vec3(0.0, 1.0, 0.0), false) * (0.5 * up8);
+    vec3 glint = u_sun_radiance * (u_glint * mu32) + v_sky_overhead * (0.5 * up8);
     vec3 sky = sky_radiance(r, false);
     vec3 drop = mix(behind, sky, fresnel) + glint;
     // The film: the same view, blurred, with a sheen of the sky.
