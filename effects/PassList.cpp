@@ -60,7 +60,7 @@ const std::vector<PassEntry>& pass_table() {
         {"water",
          {.reads = {Sky, EnvironmentCube, ShadowMap, SkyOcclusion, LineLights, SceneCopy},
           .onto = {{Depth, "the sea's surface and splash sheets over what lies below"},
-                   {Normals, "the sea's surface and splash sheets over what lies below"},
+                   {Normals, "the splash sheets over what lies below, not the sea (its normals stay in its shading)"},
                    {SceneColour, "water pixels shaded, spray blended"}}},
          make<WaterPass>},
         {"fluid",

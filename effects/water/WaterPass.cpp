@@ -54,12 +54,20 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     const float time_s = float(frame.time_s);
     surface_.update(view);  // its own small pass first: it binds another framebuffer
 
-    // Geometry: depth, normals and the water kind, with a cheap shader. Sheets first:
-    // they stand above the surface, whose pixels behind them then fail the depth test.
-    shading_.begin_geometry(t);
+    // Geometry with cheap shaders: the sea's depth, then the airborne sheets' depth,
+    // normals and kind, where they stand in front of it.
     gl::PipelineScope state({.depth_test = true, .depth_write = true});
+    shading_.begin_sea(t);
+    {
+        const gl::Program& p = surface_.program();
+        p.use();
+        p.set("u_view_proj", cam.view_proj);
+        p.set("u_sea_level", view.sea_level_m);
+        surface_.draw(cam, t.height(), look_.triangle_px);
+    }
     const bool sheets = sheets_.update(view, look_.sheet_tear_stretch);
     if (sheets) {
+        shading_.begin_sheets(t);
         const gl::Program& p = sheets_.program();
         p.use();
         p.set("u_view_proj", cam.view_proj);
@@ -67,16 +75,6 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
         p.set("u_sea_level", view.sea_level_m);
         p.set("u_foam", look_.foam);
         sheets_.draw();
-    }
-    {
-        const gl::Program& p = surface_.program();
-        p.use();
-        p.set("u_view_proj", cam.view_proj);
-        p.set("u_eye", cam.eye);
-        p.set("u_time_s", time_s);
-        p.set("u_sea_level", view.sea_level_m);
-        p.set("u_ripples", look_.ripples);
-        surface_.draw(cam, t.height(), look_.triangle_px);
     }
 
     // Shading, once per water pixel.
@@ -88,16 +86,19 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
         p->set("u_time_s", time_s);
         p->set("u_sea_level", view.sea_level_m);
         p->set("u_inv_viewport", glm::vec2(1.0f / float(t.width()), 1.0f / float(t.height())));
-        p->set("u_scene_colour", 0);
-        p->set("u_scene_depth", 1);
         p->set("u_absorption", look_.absorption);
         p->set("u_refraction", look_.refraction);
         p->set("u_foam", look_.foam);
         p->set("u_shore_foam", look_.shore_foam);
         p->set("u_sheet_thickness_m", look_.sheet_thickness_m);
     }
-    t.colour_copy().bind(0);
-    t.depth_copy().bind(1);
+    {
+        const gl::Program& p = shading_.sea_program();
+        surface_.set_grid(p);
+        p.set("u_ripples", look_.ripples);
+        p.set("u_pixel_m", 2.0f / (cam.proj[1][1] * float(t.height())));
+    }
+    surface_.bind_grid_textures();
     shading_.shade(t, sheets, water_rect(cam, t, sheets));
 
     // Spray over the shaded water, into the scene colour (depth-tested, not written).

@@ -70,15 +70,25 @@ void WaterSurfaceRenderer::update(const WaterView& view) {
 
     const gl::Program& p = program_;
     const LatticeLayout& l = mesh_.lattice;
+    set_grid(p);
+    p.set("u_lattice_origin", l.origin_xz);
+    p.set("u_lattice_cell_m", l.cell_m);
+    p.set("u_lattice_cells", l.lattice_cells);
+}
+
+void WaterSurfaceRenderer::set_grid(const gl::Program& p) const {
+    const Shape shape = shape_.value_or(Shape{});
     p.set("u_has_grid", shape.has_grid ? 1 : 0);
     p.set("u_grid_size", shape.has_grid ? shape.size : 1);
     p.set("u_grid_spacing", shape.has_grid ? shape.spacing_m : 1.0f);
     p.set("u_grid_origin", shape.origin_xz);
-    p.set("u_lattice_origin", l.origin_xz);
-    p.set("u_lattice_cell_m", l.cell_m);
-    p.set("u_lattice_cells", l.lattice_cells);
     p.set("u_heights", int(kHeightsUnit));
     p.set("u_slopes", int(kSlopesUnit));
+}
+
+void WaterSurfaceRenderer::bind_grid_textures() const {
+    heights_.bind(kHeightsUnit);
+    slopes_.bind(kSlopesUnit);
 }
 
 void WaterSurfaceRenderer::bounds(glm::vec3& lo, glm::vec3& hi) const {
@@ -89,8 +99,7 @@ void WaterSurfaceRenderer::bounds(glm::vec3& lo, glm::vec3& hi) const {
 
 void WaterSurfaceRenderer::draw(const Camera& camera, int viewport_height, float target_cell_px) {
     const gl::Program& p = program_;
-    heights_.bind(kHeightsUnit);
-    slopes_.bind(kSlopesUnit);
+    bind_grid_textures();
     vao_.bind();
     auto draw_range = [](const IndexRange& r) {
         glDrawElements(GL_TRIANGLES, GLsizei(r.count), GL_UNSIGNED_INT,

@@ -1,9 +1,9 @@
 #pragma once
 // Draws the sea surface's geometry step (WaterShading): the wave grid's lattice tiles
 // (strides from SurfaceLod), displaced by the grid's heights, and the flat frame
-// around them (shaders/water/surface.*.glsl). Each frame the heights go into an R32F
-// texture and a small pass turns them into slopes and curvature (RGBA16F, mipmapped)
-// so that the sea's pixels read one texel instead of five.
+// around them (shaders/water/surface.*.glsl), depth only. Each frame the heights go
+// into an R32F texture and a small pass turns them into slopes and curvature (RGBA16F,
+// mipmapped) so that the sea's shading reads one texel instead of five.
 #include <optional>
 #include <vector>
 
@@ -34,6 +34,11 @@ public:
     void update(const WaterView& view);
     // Draws into the bound framebuffer with the program's shared uniforms already set.
     void draw(const Camera& camera, int viewport_height, float target_cell_px);
+    // For another program that reads the grid (the sea's shading): sets its u_has_grid,
+    // u_grid_{size,spacing,origin}, u_heights and u_slopes as of the last update(), and
+    // binds those textures to their units.
+    void set_grid(const gl::Program& program) const;
+    void bind_grid_textures() const;
 
     const gl::Program& program() const { return program_; }
     const std::vector<TileDraw>& last_tiles() const { return tiles_; }

@@ -3,10 +3,11 @@
 #include "common/lighting.glsl"
 #include "water/shading.glsl"
 // Shades each splash-sheet pixel once (WaterShading): a thin film that reflects like
-// the sea, lets through most of what is behind it and whitens where it is torn.
+// the sea, lets through most of what is behind it and whitens where it is torn. The
+// depth test against the water mask leaves only sheet pixels.
 uniform sampler2D u_depth;    // the scene's depth, water included
 uniform sampler2D u_normals;  // the scene's normals, water included
-uniform sampler2D u_kind;     // r: 0 none, 0.5 sea, 0.76..1 sheet (its thickness); g: foam; b: opacity
+uniform sampler2D u_kind;     // r: 0.76..1 on a sheet (its thickness); g: foam; b: opacity
 uniform float u_sheet_thickness_m;  // at rest
 layout(location = 0) out vec4 o_colour;
 
@@ -41,7 +42,6 @@ vec3 shade_sheet(vec3 pos, vec3 n, vec3 v, float sun, float thickness_m, float w
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 kind = texelFetch(u_kind, px, 0).rgb;
-    if (kind.r < 0.7) discard;
     vec3 pos = world_from_depth(gl_FragCoord.xy * u_inv_viewport, texelFetch(u_depth, px, 0).r);
     vec3 n = texelFetch(u_normals, px, 0).xyz;
     n = dot(n, n) > 1e-8 ? normalize(n) : vec3(0, 1, 0);

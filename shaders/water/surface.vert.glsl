@@ -16,7 +16,6 @@ uniform int u_lattice_cells;
 uniform ivec2 u_tile_origin;  // lattice coordinates of the tile's corner
 uniform int u_tile_cells;
 uniform ivec4 u_edge_stride;  // on the tile's -z, +x, +z, -x edges
-out vec3 v_world_pos;
 invariant gl_Position;
 
 void main() {
@@ -39,6 +38,5 @@ void main() {
             h = textureLod(u_heights, (cell + 0.5) / float(u_grid_size), 0.0).r;
         }
     }
-    v_world_pos = vec3(xz.x, u_sea_level + h, xz.y);
-    gl_Position = u_view_proj * vec4(v_world_pos, 1.0);
+    gl_Position = u_view_proj * vec4(xz.x, u_sea_level + h, xz.y, 1.0);
 }
