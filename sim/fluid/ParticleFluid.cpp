@@ -145,36 +145,75 @@ void ParticleFluid::collide(glm::vec3& x, const std::vector<FluidSphere>& sphere
     x = glm::clamp(x, glm::vec3(r), glm::vec3(p_.box_size_m.x - r, p_.ceiling_m - r, p_.box_size_m.z - r));
 }
 
-void ParticleFluid::build_grid(JobPool& jobs) {
-    const size_t n = x_.size();
-    jobs.parallel_for(n, [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) {
-            glm::ivec3 c = glm::clamp(glm::ivec3(pred_[i] / h_), glm::ivec3(0), cells_ - 1);
-            cell_of_[i] = uint32_t((c.z * cells_.y + c.y) * cells_.x + c.x);
-        }
-    });
+void ParticleFluid::sort_by_cell() {
     // Counting sort by cell, stable in particle order.
+    const size_t n = x_.size();
     std::fill(cell_start_.begin(), cell_start_.end(), 0u);
     for (size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
     for (size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-    std::vector<uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-    for (size_t i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = uint32_t(i);
-    // Reorder every per-particle array so that cell neighbours are memory neighbours.
-    auto permute = [&](std::vector<glm::vec3>& a) {
-        for (size_t k = 0; k < n; ++k) scratch_[k] = a[order_[k]];
-        a.swap(scratch_);
-    };
-    permute(x_);
-    permute(v_);
-    permute(pred_);
+    cell_fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
+    for (size_t i = 0; i < n; ++i) order_[cell_fill_[cell_of_[i]]++] = uint32_t(i);
+    // Only the predicted positions are reordered now, so that cell neighbours are memory
+    // neighbours for the neighbour search. The old positions are read through order_ when
+    // the new velocities are taken, and the old velocities are not read again this step.
+    for (size_t k = 0; k < n; ++k) scratch_[k] = pred_[order_[k]];
+    pred_.swap(scratch_);
 }
 
-void ParticleFluid::find_neighbours(JobPool& jobs) {
-    jobs.parallel_for(x_.size(), [&](size_t b, size_t e) {
+void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<FluidSphere>& spheres, JobPool& jobs) {
+    const size_t n = x_.size();
+    if (n == 0) return;
+    // Seven parallel loops a step with three solver iterations, each starting where the
+    // one before had to have written every particle: the prediction (with each particle's
+    // cell), the neighbour search with the first iteration's density, then per iteration
+    // the position correction and the next iteration's density, and the viscosity.
+    const float max_step = p_.max_speed_mps * dt;
+    jobs.parallel_for(n, [&](size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) {
+            v_[i] += acceleration * dt;
+            float speed = length3(v_[i]);
+            if (speed * dt > max_step) v_[i] *= max_step / (speed * dt);
+            pred_[i] = x_[i] + v_[i] * dt;
+            collide(pred_[i], spheres);
+            const glm::ivec3 c = glm::clamp(glm::ivec3(pred_[i] / h_), glm::ivec3(0), cells_ - 1);
+            cell_of_[i] = uint32_t((c.z * cells_.y + c.y) * cells_.x + c.x);
+        }
+    });
+    sort_by_cell();
+
+    const float inv_rho0 = 1.0f / rest_density_;
+    // The density constraint's multiplier of particle i, from its neighbours' kernel
+    // weights and gradients (kept in pair_ for the position correction).
+    struct Constraint {
+        float rho, grad2 = 0.0f;
+        glm::vec3 grad_i{0.0f};
+    };
+    const auto add_neighbour = [&](Constraint& s, glm::vec3 d, float r2, glm::vec4& pair) {
+        float w = poly6(r2, h2_);
+        s.rho += w;
+        glm::vec3 g = spiky_gradient(d, std::sqrt(r2), h_);
+        pair = glm::vec4(g, w);
+        g *= inv_rho0;
+        s.grad_i += g;
+        s.grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
+    };
+    const auto lambda_of = [&](Constraint& s) {
+        s.grad2 += s.grad_i.x * s.grad_i.x + s.grad_i.y * s.grad_i.y + s.grad_i.z * s.grad_i.z;
+        // Only compression is corrected: a free surface must not pull together.
+        float c = std::max(s.rho * inv_rho0 - 1.0f, 0.0f);
+        return -c / (s.grad2 + epsilon_);
+    };
+    const float self_weight = poly6(0.0f, h2_);
+
+    // Neighbours from the grid, and the first iteration's density on the way: the
+    // distances the search takes are the ones the density needs.
+    jobs.parallel_for(n, [&](size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             const glm::vec3 p = pred_[i];
             const glm::ivec3 c = glm::clamp(glm::ivec3(p / h_), glm::ivec3(0), cells_ - 1);
             uint32_t* out = &neighbours_[i * kMaxNeighbours];
+            glm::vec4* pair = &pair_[i * kMaxNeighbours];
+            Constraint s{self_weight};
             int count = 0;
             for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, cells_.z - 1); ++z)
                 for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, cells_.y - 1); ++y) {
@@ -184,60 +223,26 @@ void ParticleFluid::find_neighbours(JobPool& jobs) {
                     for (uint32_t j = first; j < last; ++j) {
                         if (j == i) continue;
                         glm::vec3 d = p - pred_[j];
-                        if (d.x * d.x + d.y * d.y + d.z * d.z >= h2_) continue;
-                        if (count < kMaxNeighbours) out[count] = j;
+                        const float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
+                        if (r2 >= h2_) continue;
+                        if (count < kMaxNeighbours) {
+                            out[count] = j;
+                            add_neighbour(s, d, r2, pair[count]);
+                        }
                         ++count;
                     }
                 }
             counts_[i] = uint16_t(std::min(count, 65535));
+            lambda_[i] = lambda_of(s);
         }
     });
-}
 
-void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<FluidSphere>& spheres, JobPool& jobs) {
-    const size_t n = x_.size();
-    if (n == 0) return;
-    const float max_step = p_.max_speed_mps * dt;
-    jobs.parallel_for(n, [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) {
-            v_[i] += acceleration * dt;
-            float speed = length3(v_[i]);
-            if (speed * dt > max_step) v_[i] *= max_step / (speed * dt);
-            pred_[i] = x_[i] + v_[i] * dt;
-            collide(pred_[i], spheres);
-        }
-    });
-    build_grid(jobs);
-    find_neighbours(jobs);
-
-    const float inv_rho0 = 1.0f / rest_density_;
     const float max_correction = 2.0f * p_.particle_radius_m;
+    const float inv_dt = 1.0f / dt;
     for (int it = 0; it < p_.solver_iterations; ++it) {
-        jobs.parallel_for(n, [&](size_t b, size_t e) {
-            for (size_t i = b; i < e; ++i) {
-                const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
-                const int m = std::min<int>(counts_[i], kMaxNeighbours);
-                float rho = poly6(0.0f, h2_);
-                glm::vec3 grad_i(0.0f);
-                float grad2 = 0.0f;
-                glm::vec4* pair = &pair_[i * kMaxNeighbours];
-                for (int k = 0; k < m; ++k) {
-                    glm::vec3 d = pred_[i] - pred_[nb[k]];
-                    float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-                    float w = poly6(r2, h2_);
-                    rho += w;
-                    glm::vec3 g = spiky_gradient(d, std::sqrt(r2), h_);
-                    pair[k] = glm::vec4(g, w);  // reused by the position step below
-                    g *= inv_rho0;
-                    grad_i += g;
-                    grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
-                }
-                grad2 += grad_i.x * grad_i.x + grad_i.y * grad_i.y + grad_i.z * grad_i.z;
-                // Only compression is corrected: a free surface must not pull together.
-                float c = std::max(rho * inv_rho0 - 1.0f, 0.0f);
-                lambda_[i] = -c / (grad2 + epsilon_);
-            }
-        });
+        const bool last = it + 1 == p_.solver_iterations;
+        // The position correction, from the multipliers (written by the loop before) and
+        // the kernel gradients kept with them; it reads no other particle's position.
         jobs.parallel_for(n, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) {
                 const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
@@ -253,21 +258,27 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
                 // fling particles: a step moves at most the rest spacing.
                 dp *= inv_rho0;
                 const float len = length3(dp);
-                delta_[i] = len > max_correction ? dp * (max_correction / len) : dp;
+                pred_[i] += len > max_correction ? dp * (max_correction / len) : dp;
+                collide(pred_[i], spheres);
+                if (last) delta_[i] = (pred_[i] - x_[order_[i]]) * inv_dt;  // the new velocity
             }
         });
+        if (last) break;
         jobs.parallel_for(n, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) {
-                pred_[i] += delta_[i];
-                collide(pred_[i], spheres);
+                const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
+                const int m = std::min<int>(counts_[i], kMaxNeighbours);
+                glm::vec4* pair = &pair_[i * kMaxNeighbours];
+                Constraint s{self_weight};
+                for (int k = 0; k < m; ++k) {
+                    glm::vec3 d = pred_[i] - pred_[nb[k]];
+                    add_neighbour(s, d, d.x * d.x + d.y * d.y + d.z * d.z, pair[k]);
+                }
+                lambda_[i] = lambda_of(s);
             }
         });
     }
 
-    const float inv_dt = 1.0f / dt;
-    jobs.parallel_for(n, [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) delta_[i] = (pred_[i] - x_[i]) * inv_dt;  // new velocity
-    });
     // XSPH viscosity, reading the new velocities and writing its own.
     jobs.parallel_for(n, [&](size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
@@ -291,9 +302,9 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
             if (walls >= 2) v *= 0.5f;
             const float speed = length3(v);
             v_[i] = speed > p_.max_speed_mps ? v * (p_.max_speed_mps / speed) : v;
-            x_[i] = pred_[i];
         }
     });
+    x_.swap(pred_);
 }
 
 uint64_t ParticleFluid::hash() const {

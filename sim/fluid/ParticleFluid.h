@@ -68,8 +68,7 @@ private:
     static constexpr int kMaxNeighbours = 64;
 
     void collide(glm::vec3& x, const std::vector<FluidSphere>& spheres) const;
-    void build_grid(JobPool& jobs);
-    void find_neighbours(JobPool& jobs);
+    void sort_by_cell();
 
     ParticleFluidParams p_;
     float h_, h2_, rest_density_ = 1.0f, epsilon_ = 1.0f, scorr_w_ = 1.0f;
@@ -80,7 +79,7 @@ private:
     std::vector<uint32_t> neighbours_;  // kMaxNeighbours per particle
     std::vector<glm::vec4> pair_;       // per neighbour: kernel gradient and weight of this iteration
     std::vector<uint32_t> cell_start_;  // cells + 1 prefix sums
-    std::vector<uint32_t> cell_of_, order_;
+    std::vector<uint32_t> cell_of_, order_, cell_fill_;
     std::vector<glm::vec3> scratch_;
     std::vector<FluidBox> boxes_;
 };
