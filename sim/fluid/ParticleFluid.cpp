@@ -94,6 +94,8 @@ void ParticleFluid::add_particles(const std::vector<glm::vec3>& positions) {
     counts_.assign(n, uint16_t(p_.body_neighbours));
     neighbours_.resize(n * kMaxNeighbours);
     pair_.resize(n * kMaxNeighbours);
+    mirror_.resize(n * kMaxNeighbours);
+    back_counts_.resize(n);
     cell_of_.resize(n);
     order_.resize(n);
     scratch_.resize(n);
@@ -163,7 +165,7 @@ void ParticleFluid::sort_by_cell() {
 void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<FluidSphere>& spheres, JobPool& jobs) {
     const size_t n = x_.size();
     if (n == 0) return;
-    // Seven parallel loops a step with three solver iterations, each starting where the
+    // Eight parallel loops a step with three solver iterations, each starting where the
     // one before had to have written every particle: the prediction (with each particle's
     // cell), the neighbour search with the first iteration's density, then per iteration
     // the position correction and the next iteration's density, and the viscosity.
@@ -203,36 +205,89 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
         float c = std::max(s.rho * inv_rho0 - 1.0f, 0.0f);
         return -c / (s.grad2 + epsilon_);
     };
+    // A pair's kernel weight and gradient taken from the other particle's side, where
+    // this thread computed them already: the distance is the same float, the
+    // difference vector exactly its negation, so the weight is the same and the gradient
+    // its negation.
+    const auto add_mirrored = [&](Constraint& s, glm::vec4 other, glm::vec4& pair) {
+        const float w = other.w;
+        s.rho += w;
+        glm::vec3 g = -glm::vec3(other);
+        pair = glm::vec4(g, w);
+        g *= inv_rho0;
+        s.grad_i += g;
+        s.grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
+    };
     const float self_weight = poly6(0.0f, h2_);
 
     // Neighbours from the grid, and the first iteration's density on the way: the
-    // distances the search takes are the ones the density needs.
+    // distances the search takes are the ones the density needs. A thread goes through
+    // its particles in order; each particle looks through the grid only for neighbours
+    // below the thread's range or above itself, and hands itself (with its place in its
+    // own list) to those above it in the range: their neighbours below them in the
+    // range arrive that way, in order, before their turn. A list is the same whichever
+    // way its entries came, so it does not depend on the ranges.
+    constexpr uint32_t cap = kMaxNeighbours;
     jobs.parallel_for(n, [&](size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) back_counts_[i] = 0;
+        uint32_t below[kMaxNeighbours];
+        uint8_t below_slot[kMaxNeighbours];
         for (size_t i = b; i < e; ++i) {
             const glm::vec3 p = pred_[i];
             const glm::ivec3 c = glm::clamp(glm::ivec3(p / h_), glm::ivec3(0), cells_ - 1);
             uint32_t* out = &neighbours_[i * kMaxNeighbours];
+            uint8_t* mirror = &mirror_[i * kMaxNeighbours];
             glm::vec4* pair = &pair_[i * kMaxNeighbours];
+            // The neighbours handed over sit at the start of the list until now.
+            const uint32_t handed = back_counts_[i];
+            const int kept = int(std::min(handed, cap));
+            std::copy(out, out + kept, below);
+            std::copy(mirror, mirror + kept, below_slot);
             Constraint s{self_weight};
-            int count = 0;
-            for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, cells_.z - 1); ++z)
-                for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, cells_.y - 1); ++y) {
-                    const size_t row = size_t((z * cells_.y + y) * cells_.x);
-                    const uint32_t first = cell_start_[row + size_t(std::max(c.x - 1, 0))];
-                    const uint32_t last = cell_start_[row + size_t(std::min(c.x + 1, cells_.x - 1)) + 1];
-                    for (uint32_t j = first; j < last; ++j) {
-                        if (j == i) continue;
-                        glm::vec3 d = p - pred_[j];
-                        const float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-                        if (r2 >= h2_) continue;
-                        if (count < kMaxNeighbours) {
-                            out[count] = j;
-                            add_neighbour(s, d, r2, pair[count]);
+            uint32_t count = 0;
+            const auto search = [&](uint32_t lo, uint32_t hi, bool hand_over) {
+                for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, cells_.z - 1); ++z)
+                    for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, cells_.y - 1); ++y) {
+                        const size_t row = size_t((z * cells_.y + y) * cells_.x);
+                        const uint32_t first = std::max(cell_start_[row + size_t(std::max(c.x - 1, 0))], lo);
+                        const uint32_t last = std::min(cell_start_[row + size_t(std::min(c.x + 1, cells_.x - 1)) + 1], hi);
+                        for (uint32_t j = first; j < last; ++j) {
+                            glm::vec3 d = p - pred_[j];
+                            const float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
+                            if (r2 >= h2_) continue;
+                            if (count < cap) {
+                                out[count] = j;
+                                mirror[count] = kNoMirror;
+                                add_neighbour(s, d, r2, pair[count]);
+                            }
+                            if (hand_over && j < e) {
+                                uint32_t& k = back_counts_[j];
+                                if (k < cap) {
+                                    neighbours_[j * kMaxNeighbours + k] = uint32_t(i);
+                                    mirror_[j * kMaxNeighbours + k] = count < cap ? uint8_t(count) : kNoMirror;
+                                }
+                                ++k;
+                            }
+                            ++count;
                         }
-                        ++count;
                     }
+            };
+            search(0, uint32_t(b), false);
+            for (int k = 0; k < kept; ++k, ++count) {
+                if (count >= cap) continue;
+                const uint32_t j = below[k];
+                out[count] = j;
+                mirror[count] = below_slot[k];
+                if (below_slot[k] != kNoMirror) {
+                    add_mirrored(s, pair_[j * kMaxNeighbours + below_slot[k]], pair[count]);
+                } else {
+                    glm::vec3 d = p - pred_[j];
+                    add_neighbour(s, d, d.x * d.x + d.y * d.y + d.z * d.z, pair[count]);
                 }
-            counts_[i] = uint16_t(std::min(count, 65535));
+            }
+            count += handed - uint32_t(kept);
+            search(uint32_t(i) + 1, uint32_t(n), true);
+            counts_[i] = uint16_t(std::min<uint32_t>(count, 65535));
             lambda_[i] = lambda_of(s);
         }
     });
@@ -264,32 +319,50 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
             }
         });
         if (last) break;
+        // The next iteration's density; a pair with a neighbour below in this thread's
+        // range was computed on the neighbour's turn.
         jobs.parallel_for(n, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) {
                 const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
+                const uint8_t* mirror = &mirror_[i * kMaxNeighbours];
                 const int m = std::min<int>(counts_[i], kMaxNeighbours);
                 glm::vec4* pair = &pair_[i * kMaxNeighbours];
                 Constraint s{self_weight};
                 for (int k = 0; k < m; ++k) {
-                    glm::vec3 d = pred_[i] - pred_[nb[k]];
-                    add_neighbour(s, d, d.x * d.x + d.y * d.y + d.z * d.z, pair[k]);
+                    const uint32_t j = nb[k];
+                    if (mirror[k] != kNoMirror && j >= b) {
+                        add_mirrored(s, pair_[j * kMaxNeighbours + mirror[k]], pair[k]);
+                    } else {
+                        glm::vec3 d = pred_[i] - pred_[j];
+                        add_neighbour(s, d, d.x * d.x + d.y * d.y + d.z * d.z, pair[k]);
+                    }
                 }
                 lambda_[i] = lambda_of(s);
             }
         });
     }
 
-    // XSPH viscosity, reading the new velocities and writing its own.
+    // XSPH viscosity, reading the new velocities and writing its own. The kernel weights
+    // go to pair_ (free now) for the mirrored pairs, as in the density.
     jobs.parallel_for(n, [&](size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
+            const uint8_t* mirror = &mirror_[i * kMaxNeighbours];
             const int m = std::min<int>(counts_[i], kMaxNeighbours);
+            glm::vec4* pair = &pair_[i * kMaxNeighbours];
             glm::vec3 dv(0.0f);
             float wsum = 0.0f;
             for (int k = 0; k < m; ++k) {
-                glm::vec3 d = pred_[i] - pred_[nb[k]];
-                float w = poly6(d.x * d.x + d.y * d.y + d.z * d.z, h2_);
-                dv += (delta_[nb[k]] - delta_[i]) * w;
+                const uint32_t j = nb[k];
+                float w;
+                if (mirror[k] != kNoMirror && j >= b) {
+                    w = pair_[j * kMaxNeighbours + mirror[k]].w;
+                } else {
+                    glm::vec3 d = pred_[i] - pred_[j];
+                    w = poly6(d.x * d.x + d.y * d.y + d.z * d.z, h2_);
+                }
+                pair[k].w = w;
+                dv += (delta_[j] - delta_[i]) * w;
                 wsum += w;
             }
             glm::vec3 v = delta_[i] + (wsum > 0.0f ? dv * (p_.viscosity * std::min(wsum, 1.0f) / wsum) : glm::vec3(0.0f));

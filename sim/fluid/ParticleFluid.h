@@ -66,6 +66,7 @@ public:
 
 private:
     static constexpr int kMaxNeighbours = 64;
+    static constexpr uint8_t kNoMirror = 0xff;
 
     void collide(glm::vec3& x, const std::vector<FluidSphere>& spheres) const;
     void sort_by_cell();
@@ -78,6 +79,10 @@ private:
     std::vector<uint16_t> counts_;
     std::vector<uint32_t> neighbours_;  // kMaxNeighbours per particle
     std::vector<glm::vec4> pair_;       // per neighbour: kernel gradient and weight of this iteration
+    // Per neighbour below in the search's thread range: the particle's place in that
+    // neighbour's list (kNoMirror: not there, or not such a neighbour).
+    std::vector<uint8_t> mirror_;
+    std::vector<uint32_t> back_counts_;  // neighbours handed over during the search
     std::vector<uint32_t> cell_start_;  // cells + 1 prefix sums
     std::vector<uint32_t> cell_of_, order_, cell_fill_;
     std::vector<glm::vec3> scratch_;
