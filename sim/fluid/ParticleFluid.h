@@ -2,8 +2,11 @@
 // A position-based fluid (Macklin & Mueller 2013) in a box, in the box's own frame:
 // x, y, z in [0, size], y up. Neighbours come from a uniform grid rebuilt each tick;
 // particles are kept sorted by cell so neighbour loops walk memory in order. Every
-// parallel loop writes only its own particles from read-only inputs (Jacobi), so the
-// result is the same for any thread count.
+// parallel loop writes only the particles of its own thread's range and reads other
+// ranges only where no one writes during the loop (Jacobi); within a range a pair's
+// kernels computed on the lower particle's turn are taken, not recomputed, on the
+// higher's, the same bits (ParticleFluid.cpp), so the result is the same for any
+// thread count.
 #include <cstdint>
 #include <vector>
 
