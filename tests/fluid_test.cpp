@@ -1,6 +1,7 @@
 // The fluid tank's sim (sim/fluid): the particle fluid at rest and hit by a sphere,
 // body/splash classification, anisotropic kernels, the tank in the world (throws into
-// it, riding the boat), same hashes for 1 and 2 threads, and refused parameters.
+// it, riding the boat), same hashes for 1 and 2 threads, the step's recorded hashes, and
+// refused parameters.
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -124,6 +125,38 @@ TEST(ParticleFluid, SameStateForOneAndTwoThreads) {
         return hashes;
     };
     EXPECT_EQ(run(1), run(2));
+}
+
+// The step's results pinned bit for bit, as a replay pins the world's: a sphere thrown
+// through a block standing by a box, and a block packed at half the rest spacing, whose
+// particles have more neighbours than a list keeps (164 at most). Recorded before the
+// step shared each pair's kernels between its two particles; thread counts 1 to 3 split
+// the particles into ranges whose edges fall in different places.
+TEST(ParticleFluid, SplashAndOverpackedBlockKeepTheirRecordedHashes) {
+    for (int threads = 1; threads <= 3; ++threads) {
+        SCOPED_TRACE("threads " + std::to_string(threads));
+        sim::JobPool jobs(threads);
+        sim::ParticleFluidParams p;
+        p.box_size_m = {0.8f, 0.8f, 0.8f};
+        p.ceiling_m = 1.6f;
+        p.particle_radius_m = 0.025f;
+        sim::ParticleFluid splash(p);
+        splash.set_boxes({{{0.5f, 0.0f, 0.0f}, {0.8f, 0.15f, 0.8f}}});
+        splash.add_particles(sim::fill_block({0, 0, 0}, {0.5f, 0.8f, 0.8f}, p.particle_radius_m, 1500, 3));
+        sim::FluidSphere s{{0.25f, 0.7f, 0.4f}, {0.5f, -6.0f, 0.0f}, 0.1f};
+        for (int t = 0; t < 30; ++t) {
+            s.centre += s.velocity * kDt;
+            splash.step(kDt, {1.0f, -9.81f, 0.0f}, {s}, jobs);
+        }
+        EXPECT_EQ(splash.hash(), 0xa936b314c330271aull);
+
+        sim::ParticleFluid packed(p);
+        packed.add_particles(sim::fill_block({0, 0, 0}, {0.4f, 0.4f, 0.4f}, 0.5f * p.particle_radius_m, 800, 4));
+        packed.step(kDt, kGravity, {}, jobs);
+        EXPECT_EQ(*std::max_element(packed.neighbour_counts().begin(), packed.neighbour_counts().end()), 164);
+        for (int t = 1; t < 10; ++t) packed.step(kDt, kGravity, {}, jobs);
+        EXPECT_EQ(packed.hash(), 0x6d2a4b45f8dc4105ull);
+    }
 }
 
 TEST(ParticleFluid, RefusesUnusableParametersNamingThem) {

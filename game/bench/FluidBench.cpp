@@ -15,8 +15,11 @@
 #include "effects/fluid/FluidPass.h"
 #include "effects/scene/Camera.h"
 #include "effects/scene/FrameContext.h"
+#include "game/DataPaths.h"
 #include "game/bench/BenchSupport.h"
 #include "game/bench/SubsystemTimer.h"
+#include "game/replay/ReplayCheck.h"
+#include "game/replay/ReplayReader.h"
 #include "game/session/GameSession.h"
 #include "game/stage/RenderStage.h"
 #include "sim/fluid/FluidScenes.h"
@@ -364,11 +367,78 @@ void bench_tank_sim(BenchReport& report, bool quick) {
                 "half of it per core with 2 threads"});
 }
 
+// Times the liquid's step on one tick, CPU time of the calling thread and wall clock.
+class FluidStepTimer final : public sim::StepObserver {
+public:
+    explicit FluidStepTimer(size_t index) : index_(index) {}
+    void before(size_t i) override {
+        if (i != index_) return;
+        wall_ = Clock::now();
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &cpu_);
+    }
+    void after(size_t i) override {
+        if (i != index_) return;
+        timespec now{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+        cpu_ms = double(now.tv_sec - cpu_.tv_sec) * 1e3 + double(now.tv_nsec - cpu_.tv_nsec) * 1e-6;
+        wall_ms = seconds_since(wall_) * 1e3;
+    }
+    double cpu_ms = 0.0, wall_ms = 0.0;
+
+private:
+    size_t index_;
+    Clock::time_point wall_;
+    timespec cpu_{};
+};
+
+// The liquid of replays/harbour_tank (a float and a stone thrown in, the splash its
+// timedemo's slowest frames wait on), per awake tick: CPU time on one thread, and the
+// wall clock on two. The replay's hashes are checked on the way.
+void bench_tank_replay(BenchReport& report) {
+    const Replay replay = read_replay(data_dir() / "replays" / "harbour_tank.replay");
+    for (int threads : {1, 2}) {
+        GameSession s = GameSession::open(replay.header.level_id, threads, replay.header.seed);
+        const sim::FluidTank* tank = s.world->find<sim::FluidTank>();
+        if (!tank) return;
+        const std::vector<std::string> names = s.world->subsystem_names();
+        FluidStepTimer timer(size_t(std::find(names.begin(), names.end(), "fluid") - names.begin()));
+        ReplayChecker checker(replay);
+        std::vector<double> cpu_ms, wall_ms;
+        for (const sim::TickInput& input : replay.inputs) {
+            const bool asleep_before = tank->asleep();
+            s.world->step(input, &timer);
+            if (auto divergence = checker.after_step(*s.world)) {
+                std::cerr << "bench: harbour_tank desynced: " << divergence->message << "\n";
+                return;
+            }
+            if (asleep_before && tank->asleep()) continue;
+            cpu_ms.push_back(timer.cpu_ms);
+            wall_ms.push_back(timer.wall_ms);
+        }
+        const double ticks = double(std::max<size_t>(cpu_ms.size(), 1));
+        const std::string awake = std::to_string(cpu_ms.size()) + " awake ticks of " + std::to_string(replay.inputs.size());
+        if (threads == 1) {
+            double sum = 0.0;
+            for (double ms : cpu_ms) sum += ms;
+            report.add({"fluid", "harbour_tank liquid per awake tick, CPU time, 1 thread", sum / ticks, "ms",
+                        std::nullopt, false, awake});
+            report.add({"fluid", "harbour_tank liquid per awake tick, CPU time, 1 thread, p95", percentile(cpu_ms, 0.95),
+                        "ms", std::nullopt, false, awake});
+        } else {
+            double sum = 0.0;
+            for (double ms : wall_ms) sum += ms;
+            report.add({"fluid", "harbour_tank liquid per awake tick, wall clock, 2 threads", sum / ticks, "ms",
+                        std::nullopt, false, awake});
+        }
+    }
+}
+
 }  // namespace
 
 void bench_fluid(BenchReport& report, bool quick) {
     std::cerr << "bench: fluid sim\n";
     bench_tank_sim(report, quick);
+    bench_tank_replay(report);
 
     const int frames = quick ? 1 : 4;
     FluidStage stage(640, 480);

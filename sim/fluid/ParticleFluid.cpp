@@ -94,6 +94,8 @@ void ParticleFluid::add_particles(const std::vector<glm::vec3>& positions) {
     counts_.assign(n, uint16_t(p_.body_neighbours));
     neighbours_.resize(n * kMaxNeighbours);
     pair_.resize(n * kMaxNeighbours);
+    mirror_.resize(n * kMaxNeighbours);
+    back_counts_.resize(n);
     cell_of_.resize(n);
     order_.resize(n);
     scratch_.resize(n);
@@ -145,58 +147,28 @@ void ParticleFluid::collide(glm::vec3& x, const std::vector<FluidSphere>& sphere
     x = glm::clamp(x, glm::vec3(r), glm::vec3(p_.box_size_m.x - r, p_.ceiling_m - r, p_.box_size_m.z - r));
 }
 
-void ParticleFluid::build_grid(JobPool& jobs) {
-    const size_t n = x_.size();
-    jobs.parallel_for(n, [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) {
-            glm::ivec3 c = glm::clamp(glm::ivec3(pred_[i] / h_), glm::ivec3(0), cells_ - 1);
-            cell_of_[i] = uint32_t((c.z * cells_.y + c.y) * cells_.x + c.x);
-        }
-    });
+void ParticleFluid::sort_by_cell() {
     // Counting sort by cell, stable in particle order.
+    const size_t n = x_.size();
     std::fill(cell_start_.begin(), cell_start_.end(), 0u);
     for (size_t i = 0; i < n; ++i) ++cell_start_[cell_of_[i] + 1];
     for (size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
-    std::vector<uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
-    for (size_t i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = uint32_t(i);
-    // Reorder every per-particle array so that cell neighbours are memory neighbours.
-    auto permute = [&](std::vector<glm::vec3>& a) {
-        for (size_t k = 0; k < n; ++k) scratch_[k] = a[order_[k]];
-        a.swap(scratch_);
-    };
-    permute(x_);
-    permute(v_);
-    permute(pred_);
-}
-
-void ParticleFluid::find_neighbours(JobPool& jobs) {
-    jobs.parallel_for(x_.size(), [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) {
-            const glm::vec3 p = pred_[i];
-            const glm::ivec3 c = glm::clamp(glm::ivec3(p / h_), glm::ivec3(0), cells_ - 1);
-            uint32_t* out = &neighbours_[i * kMaxNeighbours];
-            int count = 0;
-            for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, cells_.z - 1); ++z)
-                for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, cells_.y - 1); ++y) {
-                    const size_t row = size_t((z * cells_.y + y) * cells_.x);
-                    const uint32_t first = cell_start_[row + size_t(std::max(c.x - 1, 0))];
-                    const uint32_t last = cell_start_[row + size_t(std::min(c.x + 1, cells_.x - 1)) + 1];
-                    for (uint32_t j = first; j < last; ++j) {
-                        if (j == i) continue;
-                        glm::vec3 d = p - pred_[j];
-                        if (d.x * d.x + d.y * d.y + d.z * d.z >= h2_) continue;
-                        if (count < kMaxNeighbours) out[count] = j;
-                        ++count;
-                    }
-                }
-            counts_[i] = uint16_t(std::min(count, 65535));
-        }
-    });
+    cell_fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
+    for (size_t i = 0; i < n; ++i) order_[cell_fill_[cell_of_[i]]++] = uint32_t(i);
+    // Only the predicted positions are reordered now, so that cell neighbours are memory
+    // neighbours for the neighbour search. The old positions are read through order_ when
+    // the new velocities are taken, and the old velocities are not read again this step.
+    for (size_t k = 0; k < n; ++k) scratch_[k] = pred_[order_[k]];
+    pred_.swap(scratch_);
 }
 
 void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<FluidSphere>& spheres, JobPool& jobs) {
     const size_t n = x_.size();
     if (n == 0) return;
+    // Eight parallel loops a step with three solver iterations, each starting where the
+    // one before had to have written every particle: the prediction (with each particle's
+    // cell), the neighbour search with the first iteration's density, then per iteration
+    // the position correction and the next iteration's density, and the viscosity.
     const float max_step = p_.max_speed_mps * dt;
     jobs.parallel_for(n, [&](size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
@@ -205,39 +177,127 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
             if (speed * dt > max_step) v_[i] *= max_step / (speed * dt);
             pred_[i] = x_[i] + v_[i] * dt;
             collide(pred_[i], spheres);
+            const glm::ivec3 c = glm::clamp(glm::ivec3(pred_[i] / h_), glm::ivec3(0), cells_ - 1);
+            cell_of_[i] = uint32_t((c.z * cells_.y + c.y) * cells_.x + c.x);
         }
     });
-    build_grid(jobs);
-    find_neighbours(jobs);
+    sort_by_cell();
 
     const float inv_rho0 = 1.0f / rest_density_;
-    const float max_correction = 2.0f * p_.particle_radius_m;
-    for (int it = 0; it < p_.solver_iterations; ++it) {
-        jobs.parallel_for(n, [&](size_t b, size_t e) {
-            for (size_t i = b; i < e; ++i) {
-                const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
-                const int m = std::min<int>(counts_[i], kMaxNeighbours);
-                float rho = poly6(0.0f, h2_);
-                glm::vec3 grad_i(0.0f);
-                float grad2 = 0.0f;
-                glm::vec4* pair = &pair_[i * kMaxNeighbours];
-                for (int k = 0; k < m; ++k) {
-                    glm::vec3 d = pred_[i] - pred_[nb[k]];
-                    float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-                    float w = poly6(r2, h2_);
-                    rho += w;
-                    glm::vec3 g = spiky_gradient(d, std::sqrt(r2), h_);
-                    pair[k] = glm::vec4(g, w);  // reused by the position step below
-                    g *= inv_rho0;
-                    grad_i += g;
-                    grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
+    // The density constraint's multiplier of particle i, from its neighbours' kernel
+    // weights and gradients (kept in pair_ for the position correction).
+    struct Constraint {
+        float rho, grad2 = 0.0f;
+        glm::vec3 grad_i{0.0f};
+    };
+    const auto add_neighbour = [&](Constraint& s, glm::vec3 d, float r2, glm::vec4& pair) {
+        float w = poly6(r2, h2_);
+        s.rho += w;
+        glm::vec3 g = spiky_gradient(d, std::sqrt(r2), h_);
+        pair = glm::vec4(g, w);
+        g *= inv_rho0;
+        s.grad_i += g;
+        s.grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
+    };
+    const auto lambda_of = [&](Constraint& s) {
+        s.grad2 += s.grad_i.x * s.grad_i.x + s.grad_i.y * s.grad_i.y + s.grad_i.z * s.grad_i.z;
+        // Only compression is corrected: a free surface must not pull together.
+        float c = std::max(s.rho * inv_rho0 - 1.0f, 0.0f);
+        return -c / (s.grad2 + epsilon_);
+    };
+    // A pair's kernel weight and gradient taken from the other particle's side, where
+    // this thread computed them already: the distance is the same float, the
+    // difference vector exactly its negation, so the weight is the same and the gradient
+    // its negation.
+    const auto add_mirrored = [&](Constraint& s, glm::vec4 other, glm::vec4& pair) {
+        const float w = other.w;
+        s.rho += w;
+        glm::vec3 g = -glm::vec3(other);
+        pair = glm::vec4(g, w);
+        g *= inv_rho0;
+        s.grad_i += g;
+        s.grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
+    };
+    const float self_weight = poly6(0.0f, h2_);
+
+    // Neighbours from the grid, and the first iteration's density on the way: the
+    // distances the search takes are the ones the density needs. A thread goes through
+    // its particles in order; each particle looks through the grid only for neighbours
+    // below the thread's range or above itself, and hands itself (with its place in its
+    // own list) to those above it in the range: their neighbours below them in the
+    // range arrive that way, in order, before their turn. A list is the same whichever
+    // way its entries came, so it does not depend on the ranges.
+    constexpr uint32_t cap = kMaxNeighbours;
+    jobs.parallel_for(n, [&](size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) back_counts_[i] = 0;
+        uint32_t below[kMaxNeighbours];
+        uint8_t below_slot[kMaxNeighbours];
+        for (size_t i = b; i < e; ++i) {
+            const glm::vec3 p = pred_[i];
+            const glm::ivec3 c = glm::clamp(glm::ivec3(p / h_), glm::ivec3(0), cells_ - 1);
+            uint32_t* out = &neighbours_[i * kMaxNeighbours];
+            uint8_t* mirror = &mirror_[i * kMaxNeighbours];
+            glm::vec4* pair = &pair_[i * kMaxNeighbours];
+            // The neighbours handed over sit at the start of the list until now.
+            const uint32_t handed = back_counts_[i];
+            const int kept = int(std::min(handed, cap));
+            std::copy(out, out + kept, below);
+            std::copy(mirror, mirror + kept, below_slot);
+            Constraint s{self_weight};
+            uint32_t count = 0;
+            const auto search = [&](uint32_t lo, uint32_t hi, bool hand_over) {
+                for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, cells_.z - 1); ++z)
+                    for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, cells_.y - 1); ++y) {
+                        const size_t row = size_t((z * cells_.y + y) * cells_.x);
+                        const uint32_t first = std::max(cell_start_[row + size_t(std::max(c.x - 1, 0))], lo);
+                        const uint32_t last = std::min(cell_start_[row + size_t(std::min(c.x + 1, cells_.x - 1)) + 1], hi);
+                        for (uint32_t j = first; j < last; ++j) {
+                            glm::vec3 d = p - pred_[j];
+                            const float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
+                            if (r2 >= h2_) continue;
+                            if (count < cap) {
+                                out[count] = j;
+                                mirror[count] = kNoMirror;
+                                add_neighbour(s, d, r2, pair[count]);
+                            }
+                            if (hand_over && j < e) {
+                                uint32_t& k = back_counts_[j];
+                                if (k < cap) {
+                                    neighbours_[j * kMaxNeighbours + k] = uint32_t(i);
+                                    mirror_[j * kMaxNeighbours + k] = count < cap ? uint8_t(count) : kNoMirror;
+                                }
+                                ++k;
+                            }
+                            ++count;
+                        }
+                    }
+            };
+            search(0, uint32_t(b), false);
+            for (int k = 0; k < kept; ++k, ++count) {
+                if (count >= cap) continue;
+                const uint32_t j = below[k];
+                out[count] = j;
+                mirror[count] = below_slot[k];
+                if (below_slot[k] != kNoMirror) {
+                    add_mirrored(s, pair_[j * kMaxNeighbours + below_slot[k]], pair[count]);
+                } else {
+                    glm::vec3 d = p - pred_[j];
+                    add_neighbour(s, d, d.x * d.x + d.y * d.y + d.z * d.z, pair[count]);
                 }
-                grad2 += grad_i.x * grad_i.x + grad_i.y * grad_i.y + grad_i.z * grad_i.z;
-                // Only compression is corrected: a free surface must not pull together.
-                float c = std::max(rho * inv_rho0 - 1.0f, 0.0f);
-                lambda_[i] = -c / (grad2 + epsilon_);
             }
-        });
+            count += handed - uint32_t(kept);
+            search(uint32_t(i) + 1, uint32_t(n), true);
+            counts_[i] = uint16_t(std::min<uint32_t>(count, 65535));
+            lambda_[i] = lambda_of(s);
+        }
+    });
+
+    const float max_correction = 2.0f * p_.particle_radius_m;
+    const float inv_dt = 1.0f / dt;
+    for (int it = 0; it < p_.solver_iterations; ++it) {
+        const bool last = it + 1 == p_.solver_iterations;
+        // The position correction, from the multipliers (written by the loop before) and
+        // the kernel gradients kept with them; it reads no other particle's position.
         jobs.parallel_for(n, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) {
                 const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
@@ -253,32 +313,56 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
                 // fling particles: a step moves at most the rest spacing.
                 dp *= inv_rho0;
                 const float len = length3(dp);
-                delta_[i] = len > max_correction ? dp * (max_correction / len) : dp;
+                pred_[i] += len > max_correction ? dp * (max_correction / len) : dp;
+                collide(pred_[i], spheres);
+                if (last) delta_[i] = (pred_[i] - x_[order_[i]]) * inv_dt;  // the new velocity
             }
         });
+        if (last) break;
+        // The next iteration's density; a pair with a neighbour below in this thread's
+        // range was computed on the neighbour's turn.
         jobs.parallel_for(n, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) {
-                pred_[i] += delta_[i];
-                collide(pred_[i], spheres);
+                const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
+                const uint8_t* mirror = &mirror_[i * kMaxNeighbours];
+                const int m = std::min<int>(counts_[i], kMaxNeighbours);
+                glm::vec4* pair = &pair_[i * kMaxNeighbours];
+                Constraint s{self_weight};
+                for (int k = 0; k < m; ++k) {
+                    const uint32_t j = nb[k];
+                    if (mirror[k] != kNoMirror && j >= b) {
+                        add_mirrored(s, pair_[j * kMaxNeighbours + mirror[k]], pair[k]);
+                    } else {
+                        glm::vec3 d = pred_[i] - pred_[j];
+                        add_neighbour(s, d, d.x * d.x + d.y * d.y + d.z * d.z, pair[k]);
+                    }
+                }
+                lambda_[i] = lambda_of(s);
             }
         });
     }
 
-    const float inv_dt = 1.0f / dt;
-    jobs.parallel_for(n, [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) delta_[i] = (pred_[i] - x_[i]) * inv_dt;  // new velocity
-    });
-    // XSPH viscosity, reading the new velocities and writing its own.
+    // XSPH viscosity, reading the new velocities and writing its own. The kernel weights
+    // go to pair_ (free now) for the mirrored pairs, as in the density.
     jobs.parallel_for(n, [&](size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
             const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
+            const uint8_t* mirror = &mirror_[i * kMaxNeighbours];
             const int m = std::min<int>(counts_[i], kMaxNeighbours);
+            glm::vec4* pair = &pair_[i * kMaxNeighbours];
             glm::vec3 dv(0.0f);
             float wsum = 0.0f;
             for (int k = 0; k < m; ++k) {
-                glm::vec3 d = pred_[i] - pred_[nb[k]];
-                float w = poly6(d.x * d.x + d.y * d.y + d.z * d.z, h2_);
-                dv += (delta_[nb[k]] - delta_[i]) * w;
+                const uint32_t j = nb[k];
+                float w;
+                if (mirror[k] != kNoMirror && j >= b) {
+                    w = pair_[j * kMaxNeighbours + mirror[k]].w;
+                } else {
+                    glm::vec3 d = pred_[i] - pred_[j];
+                    w = poly6(d.x * d.x + d.y * d.y + d.z * d.z, h2_);
+                }
+                pair[k].w = w;
+                dv += (delta_[j] - delta_[i]) * w;
                 wsum += w;
             }
             glm::vec3 v = delta_[i] + (wsum > 0.0f ? dv * (p_.viscosity * std::min(wsum, 1.0f) / wsum) : glm::vec3(0.0f));
@@ -291,9 +375,9 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
             if (walls >= 2) v *= 0.5f;
             const float speed = length3(v);
             v_[i] = speed > p_.max_speed_mps ? v * (p_.max_speed_mps / speed) : v;
-            x_[i] = pred_[i];
         }
     });
+    x_.swap(pred_);
 }
 
 uint64_t ParticleFluid::hash() const {

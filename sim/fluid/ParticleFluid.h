@@ -2,8 +2,11 @@
 // A position-based fluid (Macklin & Mueller 2013) in a box, in the box's own frame:
 // x, y, z in [0, size], y up. Neighbours come from a uniform grid rebuilt each tick;
 // particles are kept sorted by cell so neighbour loops walk memory in order. Every
-// parallel loop writes only its own particles from read-only inputs (Jacobi), so the
-// result is the same for any thread count.
+// parallel loop writes only the particles of its own thread's range and reads other
+// ranges only where no one writes during the loop (Jacobi); within a range a pair's
+// kernels computed on the lower particle's turn are taken, not recomputed, on the
+// higher's, the same bits (ParticleFluid.cpp), so the result is the same for any
+// thread count.
 #include <cstdint>
 #include <vector>
 
@@ -66,10 +69,10 @@ public:
 
 private:
     static constexpr int kMaxNeighbours = 64;
+    static constexpr uint8_t kNoMirror = 0xff;
 
     void collide(glm::vec3& x, const std::vector<FluidSphere>& spheres) const;
-    void build_grid(JobPool& jobs);
-    void find_neighbours(JobPool& jobs);
+    void sort_by_cell();
 
     ParticleFluidParams p_;
     float h_, h2_, rest_density_ = 1.0f, epsilon_ = 1.0f, scorr_w_ = 1.0f;
@@ -79,8 +82,12 @@ private:
     std::vector<uint16_t> counts_;
     std::vector<uint32_t> neighbours_;  // kMaxNeighbours per particle
     std::vector<glm::vec4> pair_;       // per neighbour: kernel gradient and weight of this iteration
+    // Per neighbour below in the search's thread range: the particle's place in that
+    // neighbour's list (kNoMirror: not there, or not such a neighbour).
+    std::vector<uint8_t> mirror_;
+    std::vector<uint32_t> back_counts_;  // neighbours handed over during the search
     std::vector<uint32_t> cell_start_;  // cells + 1 prefix sums
-    std::vector<uint32_t> cell_of_, order_;
+    std::vector<uint32_t> cell_of_, order_, cell_fill_;
     std::vector<glm::vec3> scratch_;
     std::vector<FluidBox> boxes_;
 };
