@@ -10,7 +10,7 @@
 namespace effects {
 
 namespace {
-constexpr float kBladeHalfWidth_m = 0.008f;  // the rubber's, wider than the arm's (shaders/rain/windshield.frag.glsl)
+constexpr float kBladeHalfWidth_m = 0.008f;  // the rubber's, wider than the arm's: the shader draws it this wide
 }  // namespace
 
 RainPass::RainPass(int height_map_width, int height_map_height)
@@ -86,6 +86,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     shade_.use();
     SceneLighting::apply_sky(shade_, frame.data.sky);
     shade_.set("u_model", view.car_to_world);
+    shade_.set("u_blade_half_width_m", kBladeHalfWidth_m);
     shade_.set("u_view_proj", frame.camera.view_proj);
     shade_.set("u_eye", frame.camera.eye);
     shade_.set("u_glass_size_m", glass_size);

@@ -32,7 +32,7 @@ in vec3 v_tangent_u, v_tangent_v;
 flat in vec3 v_sky_overhead;  // sky_radiance straight up
 layout(location = 0) out vec4 o_colour;
 
-const float kBladeHalfWidth_m = 0.008;  // RainPass.cpp's cells to shade reach this far
+uniform float u_blade_half_width_m;  // RainPass's: the cells it shades reach this far
 const float kArmHalfWidth_m = 0.005;
 
 // Coverage of the blades and their arms at this point of the glass (0..1, antialiased).
@@ -45,7 +45,7 @@ float blades(vec2 p, out float arm) {
         float along = dot(rel, u_blade_dir[b]);
         float across = abs(rel.x * u_blade_dir[b].y - rel.y * u_blade_dir[b].x);
         if (along > u_blade_span[b].x && along < u_blade_span[b].y)
-            cover = max(cover, 1.0 - smoothstep(kBladeHalfWidth_m - aa, kBladeHalfWidth_m + aa, across));
+            cover = max(cover, 1.0 - smoothstep(u_blade_half_width_m - aa, u_blade_half_width_m + aa, across));
         if (along > 0.0 && along < u_blade_span[b].y * 0.97)
             arm = max(arm, 1.0 - smoothstep(kArmHalfWidth_m - aa, kArmHalfWidth_m + aa, across));
     }
