@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/core/Float4.h"
 #include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
 
@@ -28,6 +29,69 @@ glm::vec3 spiky_gradient(glm::vec3 d, float r, float h) {
 }
 
 float length3(glm::vec3 v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+
+// The pairs of one particle whose kernels it computes itself (not taken from the other
+// side), gathered so that four are computed at once with the scalar kernels' operations
+// (poly6 and spiky_gradient above, the tensile term of the position correction).
+struct PairBatch {
+    static constexpr int kCap = 64;
+    alignas(16) float dx[kCap + 3], dy[kCap + 3], dz[kCap + 3], r2[kCap + 3];
+    uint8_t slot[kCap];
+    int size = 0;
+
+    void add(uint32_t s, glm::vec3 d, float dist2) {
+        dx[size] = d.x;
+        dy[size] = d.y;
+        dz[size] = d.z;
+        r2[size] = dist2;
+        slot[size++] = uint8_t(s);
+    }
+    // Padding to a multiple of four with pairs at the kernel's edge, never stored.
+    int padded(float h2) {
+        for (int k = size; k % 4; ++k) dx[k] = dy[k] = dz[k] = 0.0f, r2[k] = h2;
+        return (size + 3) & ~3;
+    }
+    // Weight, gradient and tensile term (gradient and tensile term into pair, as x, y, z, w).
+    void kernels(float h, float h2, float scorr_w, glm::vec4* pair, float* weight) {
+        const Float4 one = Float4::splat(1.0f), zero = Float4::splat(0.0f), h4 = Float4::splat(h),
+                     h24 = Float4::splat(h2), tiny = Float4::splat(1e-9f), spiky = Float4::splat(-kSpikyOverPoly6),
+                     scorr_w4 = Float4::splat(scorr_w), tensile = Float4::splat(-0.001f);
+        const int end = padded(h2);
+        for (int k = 0; k < end; k += 4) {
+            const Float4 d2 = Float4::load(r2 + k);
+            const Float4 t = one - d2 / h24;
+            const Float4 w = select(t > zero, t * t * t, zero);
+            const Float4 r = sqrt(d2);
+            const Float4 q = one - r / h4;
+            const Float4 f = spiky * q * q / (h4 * r);
+            const Mask4 inside = (r > tiny) & (r < h4);
+            Float4 gx = select(inside, Float4::load(dx + k) * f, zero);
+            Float4 gy = select(inside, Float4::load(dy + k) * f, zero);
+            Float4 gz = select(inside, Float4::load(dz + k) * f, zero);
+            const Float4 ws = w / scorr_w4;
+            Float4 sc = tensile * ws * ws * ws * ws;  // k = 0.001, n = 4
+            transpose(gx, gy, gz, sc);
+            const Float4* per_pair[4] = {&gx, &gy, &gz, &sc};
+            alignas(16) float wk[4];
+            w.store(wk);
+            for (int m = 0; m < 4 && k + m < size; ++m) {
+                per_pair[m]->store(&pair[slot[k + m]].x);
+                weight[slot[k + m]] = wk[m];
+            }
+        }
+    }
+    // The weights only.
+    void weights(float h2, float* weight) {
+        const Float4 one = Float4::splat(1.0f), zero = Float4::splat(0.0f), h24 = Float4::splat(h2);
+        const int end = padded(h2);
+        for (int k = 0; k < end; k += 4) {
+            const Float4 t = one - Float4::load(r2 + k) / h24;
+            alignas(16) float wk[4];
+            select(t > zero, t * t * t, zero).store(wk);
+            for (int m = 0; m < 4 && k + m < size; ++m) weight[slot[k + m]] = wk[m];
+        }
+    }
+};
 
 }  // namespace
 
@@ -94,11 +158,13 @@ void ParticleFluid::add_particles(const std::vector<glm::vec3>& positions) {
     counts_.assign(n, uint16_t(p_.body_neighbours));
     neighbours_.resize(n * kMaxNeighbours);
     pair_.resize(n * kMaxNeighbours);
+    weight_.resize(n * kMaxNeighbours);
     mirror_.resize(n * kMaxNeighbours);
     back_counts_.resize(n);
     cell_of_.resize(n);
     order_.resize(n);
     scratch_.resize(n);
+    for (std::vector<float>* v : {&sorted_x_, &sorted_y_, &sorted_z_}) v->assign(n + 3, 0.0f);
 }
 
 size_t ParticleFluid::splash_count() const {
@@ -158,7 +224,13 @@ void ParticleFluid::sort_by_cell() {
     // Only the predicted positions are reordered now, so that cell neighbours are memory
     // neighbours for the neighbour search. The old positions are read through order_ when
     // the new velocities are taken, and the old velocities are not read again this step.
-    for (size_t k = 0; k < n; ++k) scratch_[k] = pred_[order_[k]];
+    for (size_t k = 0; k < n; ++k) {
+        const glm::vec3 q = pred_[order_[k]];
+        scratch_[k] = q;
+        sorted_x_[k] = q.x;
+        sorted_y_[k] = q.y;
+        sorted_z_[k] = q.z;
+    }
     pred_.swap(scratch_);
 }
 
@@ -184,41 +256,33 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
     sort_by_cell();
 
     const float inv_rho0 = 1.0f / rest_density_;
-    // The density constraint's multiplier of particle i, from its neighbours' kernel
-    // weights and gradients (kept in pair_ for the position correction).
-    struct Constraint {
-        float rho, grad2 = 0.0f;
-        glm::vec3 grad_i{0.0f};
-    };
-    const auto add_neighbour = [&](Constraint& s, glm::vec3 d, float r2, glm::vec4& pair) {
-        float w = poly6(r2, h2_);
-        s.rho += w;
-        glm::vec3 g = spiky_gradient(d, std::sqrt(r2), h_);
-        pair = glm::vec4(g, w);
-        g *= inv_rho0;
-        s.grad_i += g;
-        s.grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
-    };
-    const auto lambda_of = [&](Constraint& s) {
-        s.grad2 += s.grad_i.x * s.grad_i.x + s.grad_i.y * s.grad_i.y + s.grad_i.z * s.grad_i.z;
-        // Only compression is corrected: a free surface must not pull together.
-        float c = std::max(s.rho * inv_rho0 - 1.0f, 0.0f);
-        return -c / (s.grad2 + epsilon_);
-    };
-    // A pair's kernel weight and gradient taken from the other particle's side, where
-    // this thread computed them already: the distance is the same float, the
-    // difference vector exactly its negation, so the weight is the same and the gradient
-    // its negation.
-    const auto add_mirrored = [&](Constraint& s, glm::vec4 other, glm::vec4& pair) {
-        const float w = other.w;
-        s.rho += w;
-        glm::vec3 g = -glm::vec3(other);
-        pair = glm::vec4(g, w);
-        g *= inv_rho0;
-        s.grad_i += g;
-        s.grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
-    };
+    static_assert(kMaxNeighbours <= PairBatch::kCap, "a batch holds a whole list");
+    // The density constraint's multiplier of a particle from its neighbours' kernel
+    // weights and gradients (in list order), the self weight first.
     const float self_weight = poly6(0.0f, h2_);
+    const auto lambda_of = [&](const glm::vec4* pair, const float* weight, int m) {
+        float rho = self_weight, grad2 = 0.0f;
+        glm::vec3 grad_i(0.0f);
+        for (int k = 0; k < m; ++k) {
+            rho += weight[k];
+            const glm::vec3 g = glm::vec3(pair[k]) * inv_rho0;
+            grad_i += g;
+            grad2 += g.x * g.x + g.y * g.y + g.z * g.z;
+        }
+        grad2 += grad_i.x * grad_i.x + grad_i.y * grad_i.y + grad_i.z * grad_i.z;
+        // Only compression is corrected: a free surface must not pull together.
+        float c = std::max(rho * inv_rho0 - 1.0f, 0.0f);
+        return -c / (grad2 + epsilon_);
+    };
+    // A pair's kernels taken from the other particle's side, where this thread computed
+    // them already: the distance is the same float, the difference vector exactly its
+    // negation, so the weight and the tensile term are the same and the gradient its
+    // negation.
+    const auto mirrored = [&](uint32_t j, uint8_t slot, glm::vec4& pair, float& weight) {
+        const glm::vec4 other = pair_[j * kMaxNeighbours + slot];
+        pair = glm::vec4(-glm::vec3(other), other.w);
+        weight = weight_[j * kMaxNeighbours + slot];
+    };
 
     // Neighbours from the grid, and the first iteration's density on the way: the
     // distances the search takes are the ones the density needs. A thread goes through
@@ -232,43 +296,61 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
         for (size_t i = b; i < e; ++i) back_counts_[i] = 0;
         uint32_t below[kMaxNeighbours];
         uint8_t below_slot[kMaxNeighbours];
+        PairBatch batch;
+        const Float4 h2 = Float4::splat(h2_);
         for (size_t i = b; i < e; ++i) {
             const glm::vec3 p = pred_[i];
             const glm::ivec3 c = glm::clamp(glm::ivec3(p / h_), glm::ivec3(0), cells_ - 1);
             uint32_t* out = &neighbours_[i * kMaxNeighbours];
             uint8_t* mirror = &mirror_[i * kMaxNeighbours];
             glm::vec4* pair = &pair_[i * kMaxNeighbours];
+            float* weight = &weight_[i * kMaxNeighbours];
             // The neighbours handed over sit at the start of the list until now.
             const uint32_t handed = back_counts_[i];
             const int kept = int(std::min(handed, cap));
             std::copy(out, out + kept, below);
             std::copy(mirror, mirror + kept, below_slot);
-            Constraint s{self_weight};
+            batch.size = 0;
             uint32_t count = 0;
+            const Float4 px = Float4::splat(p.x), py = Float4::splat(p.y), pz = Float4::splat(p.z);
+            // Four candidates at a time, those within the kernel taken in index order.
             const auto search = [&](uint32_t lo, uint32_t hi, bool hand_over) {
                 for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, cells_.z - 1); ++z)
                     for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, cells_.y - 1); ++y) {
                         const size_t row = size_t((z * cells_.y + y) * cells_.x);
                         const uint32_t first = std::max(cell_start_[row + size_t(std::max(c.x - 1, 0))], lo);
                         const uint32_t last = std::min(cell_start_[row + size_t(std::min(c.x + 1, cells_.x - 1)) + 1], hi);
-                        for (uint32_t j = first; j < last; ++j) {
-                            glm::vec3 d = p - pred_[j];
-                            const float r2 = d.x * d.x + d.y * d.y + d.z * d.z;
-                            if (r2 >= h2_) continue;
-                            if (count < cap) {
-                                out[count] = j;
-                                mirror[count] = kNoMirror;
-                                add_neighbour(s, d, r2, pair[count]);
-                            }
-                            if (hand_over && j < e) {
-                                uint32_t& k = back_counts_[j];
-                                if (k < cap) {
-                                    neighbours_[j * kMaxNeighbours + k] = uint32_t(i);
-                                    mirror_[j * kMaxNeighbours + k] = count < cap ? uint8_t(count) : kNoMirror;
+                        for (uint32_t j0 = first; j0 < last; j0 += 4) {
+                            const Float4 dx = px - Float4::load(&sorted_x_[j0]);
+                            const Float4 dy = py - Float4::load(&sorted_y_[j0]);
+                            const Float4 dz = pz - Float4::load(&sorted_z_[j0]);
+                            const Float4 r2 = dx * dx + dy * dy + dz * dz;
+                            int hits = (r2 < h2).bits();
+                            if (last - j0 < 4) hits &= (1 << (last - j0)) - 1;
+                            if (!hits) continue;
+                            alignas(16) float lx[4], ly[4], lz[4], lr2[4];
+                            dx.store(lx);
+                            dy.store(ly);
+                            dz.store(lz);
+                            r2.store(lr2);
+                            for (; hits; hits &= hits - 1) {
+                                const int t = __builtin_ctz(unsigned(hits));
+                                const uint32_t j = j0 + uint32_t(t);
+                                if (count < cap) {
+                                    out[count] = j;
+                                    mirror[count] = kNoMirror;
+                                    batch.add(count, {lx[t], ly[t], lz[t]}, lr2[t]);
                                 }
-                                ++k;
+                                if (hand_over && j < e) {
+                                    uint32_t& k = back_counts_[j];
+                                    if (k < cap) {
+                                        neighbours_[j * kMaxNeighbours + k] = uint32_t(i);
+                                        mirror_[j * kMaxNeighbours + k] = count < cap ? uint8_t(count) : kNoMirror;
+                                    }
+                                    ++k;
+                                }
+                                ++count;
                             }
-                            ++count;
                         }
                     }
             };
@@ -279,16 +361,17 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
                 out[count] = j;
                 mirror[count] = below_slot[k];
                 if (below_slot[k] != kNoMirror) {
-                    add_mirrored(s, pair_[j * kMaxNeighbours + below_slot[k]], pair[count]);
+                    mirrored(j, below_slot[k], pair[count], weight[count]);
                 } else {
-                    glm::vec3 d = p - pred_[j];
-                    add_neighbour(s, d, d.x * d.x + d.y * d.y + d.z * d.z, pair[count]);
+                    const glm::vec3 d = p - pred_[j];
+                    batch.add(count, d, d.x * d.x + d.y * d.y + d.z * d.z);
                 }
             }
             count += handed - uint32_t(kept);
             search(uint32_t(i) + 1, uint32_t(n), true);
+            batch.kernels(h_, h2_, scorr_w_, pair, weight);
             counts_[i] = uint16_t(std::min<uint32_t>(count, 65535));
-            lambda_[i] = lambda_of(s);
+            lambda_[i] = lambda_of(pair, weight, int(std::min(count, cap)));
         }
     });
 
@@ -297,21 +380,22 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
     for (int it = 0; it < p_.solver_iterations; ++it) {
         const bool last = it + 1 == p_.solver_iterations;
         // The position correction, from the multipliers (written by the loop before) and
-        // the kernel gradients kept with them; it reads no other particle's position.
+        // the kernel gradients and tensile terms kept with them; it reads no other
+        // particle's position.
         jobs.parallel_for(n, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) {
                 const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
                 const int m = std::min<int>(counts_[i], kMaxNeighbours);
                 const glm::vec4* pair = &pair_[i * kMaxNeighbours];
-                glm::vec3 dp(0.0f);
-                for (int k = 0; k < m; ++k) {
-                    float w = pair[k].w / scorr_w_;
-                    float scorr = -0.001f * w * w * w * w;  // tensile instability term, k = 0.001, n = 4
-                    dp += (lambda_[i] + lambda_[nb[k]] + scorr) * glm::vec3(pair[k]);
-                }
+                // x, y and z of the sum side by side (the fourth element is not used).
+                Float4 sum = Float4::splat(0.0f);
+                for (int k = 0; k < m; ++k)
+                    sum = sum + Float4::splat(lambda_[i] + lambda_[nb[k]] + pair[k].w) * Float4::load(&pair[k].x);
+                alignas(16) float s4[4];
+                sum.store(s4);
                 // With few iterations a deep compression would be undone in one leap and
                 // fling particles: a step moves at most the rest spacing.
-                dp *= inv_rho0;
+                const glm::vec3 dp = glm::vec3(s4[0], s4[1], s4[2]) * inv_rho0;
                 const float len = length3(dp);
                 pred_[i] += len > max_correction ? dp * (max_correction / len) : dp;
                 collide(pred_[i], spheres);
@@ -322,48 +406,54 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
         // The next iteration's density; a pair with a neighbour below in this thread's
         // range was computed on the neighbour's turn.
         jobs.parallel_for(n, [&](size_t b, size_t e) {
+            PairBatch batch;
             for (size_t i = b; i < e; ++i) {
                 const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
                 const uint8_t* mirror = &mirror_[i * kMaxNeighbours];
                 const int m = std::min<int>(counts_[i], kMaxNeighbours);
                 glm::vec4* pair = &pair_[i * kMaxNeighbours];
-                Constraint s{self_weight};
+                float* weight = &weight_[i * kMaxNeighbours];
+                batch.size = 0;
                 for (int k = 0; k < m; ++k) {
                     const uint32_t j = nb[k];
                     if (mirror[k] != kNoMirror && j >= b) {
-                        add_mirrored(s, pair_[j * kMaxNeighbours + mirror[k]], pair[k]);
+                        mirrored(j, mirror[k], pair[k], weight[k]);
                     } else {
-                        glm::vec3 d = pred_[i] - pred_[j];
-                        add_neighbour(s, d, d.x * d.x + d.y * d.y + d.z * d.z, pair[k]);
+                        const glm::vec3 d = pred_[i] - pred_[j];
+                        batch.add(uint32_t(k), d, d.x * d.x + d.y * d.y + d.z * d.z);
                     }
                 }
-                lambda_[i] = lambda_of(s);
+                batch.kernels(h_, h2_, scorr_w_, pair, weight);
+                lambda_[i] = lambda_of(pair, weight, m);
             }
         });
     }
 
     // XSPH viscosity, reading the new velocities and writing its own. The kernel weights
-    // go to pair_ (free now) for the mirrored pairs, as in the density.
+    // go to weight_ for the mirrored pairs, as in the density.
     jobs.parallel_for(n, [&](size_t b, size_t e) {
+        PairBatch batch;
         for (size_t i = b; i < e; ++i) {
             const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
             const uint8_t* mirror = &mirror_[i * kMaxNeighbours];
             const int m = std::min<int>(counts_[i], kMaxNeighbours);
-            glm::vec4* pair = &pair_[i * kMaxNeighbours];
+            float* weight = &weight_[i * kMaxNeighbours];
+            batch.size = 0;
+            for (int k = 0; k < m; ++k) {
+                const uint32_t j = nb[k];
+                if (mirror[k] != kNoMirror && j >= b) {
+                    weight[k] = weight_[j * kMaxNeighbours + mirror[k]];
+                } else {
+                    const glm::vec3 d = pred_[i] - pred_[j];
+                    batch.add(uint32_t(k), d, d.x * d.x + d.y * d.y + d.z * d.z);
+                }
+            }
+            batch.weights(h2_, weight);
             glm::vec3 dv(0.0f);
             float wsum = 0.0f;
             for (int k = 0; k < m; ++k) {
-                const uint32_t j = nb[k];
-                float w;
-                if (mirror[k] != kNoMirror && j >= b) {
-                    w = pair_[j * kMaxNeighbours + mirror[k]].w;
-                } else {
-                    glm::vec3 d = pred_[i] - pred_[j];
-                    w = poly6(d.x * d.x + d.y * d.y + d.z * d.z, h2_);
-                }
-                pair[k].w = w;
-                dv += (delta_[j] - delta_[i]) * w;
-                wsum += w;
+                dv += (delta_[nb[k]] - delta_[i]) * weight[k];
+                wsum += weight[k];
             }
             glm::vec3 v = delta_[i] + (wsum > 0.0f ? dv * (p_.viscosity * std::min(wsum, 1.0f) / wsum) : glm::vec3(0.0f));
             // Particles pinned in an edge or corner of the box would be squeezed out

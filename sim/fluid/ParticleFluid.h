@@ -81,7 +81,10 @@ private:
     std::vector<float> lambda_;
     std::vector<uint16_t> counts_;
     std::vector<uint32_t> neighbours_;  // kMaxNeighbours per particle
-    std::vector<glm::vec4> pair_;       // per neighbour: kernel gradient and weight of this iteration
+    // Per neighbour, this iteration's: the kernel gradient and the tensile term (w), and
+    // the kernel weight.
+    std::vector<glm::vec4> pair_;
+    std::vector<float> weight_;
     // Per neighbour below in the search's thread range: the particle's place in that
     // neighbour's list (kNoMirror: not there, or not such a neighbour).
     std::vector<uint8_t> mirror_;
@@ -89,6 +92,7 @@ private:
     std::vector<uint32_t> cell_start_;  // cells + 1 prefix sums
     std::vector<uint32_t> cell_of_, order_, cell_fill_;
     std::vector<glm::vec3> scratch_;
+    std::vector<float> sorted_x_, sorted_y_, sorted_z_;  // pred_ after the sort, for the search; padded by 3
     std::vector<FluidBox> boxes_;
 };
 
