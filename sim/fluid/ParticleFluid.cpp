@@ -30,21 +30,20 @@ glm::vec3 spiky_gradient(glm::vec3 d, float r, float h) {
 
 float length3(glm::vec3 v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
 
-// The pairs of one particle whose kernels it computes itself (not taken from the other
-// side), gathered so that four are computed at once with the scalar kernels' operations
-// (poly6 and spiky_gradient above, the tensile term of the position correction).
+// The pairs of one particle's list, gathered so that four are computed at once with
+// the scalar kernels' operations (poly6 and spiky_gradient above, and the tensile term
+// of the position correction), each into its place in the list.
 struct PairBatch {
     static constexpr int kCap = 64;
     alignas(16) float dx[kCap + 3], dy[kCap + 3], dz[kCap + 3], r2[kCap + 3];
-    uint8_t slot[kCap];
+    alignas(16) float weight[kCap + 3];  // what kernels() and weights() computed
     int size = 0;
 
-    void add(uint32_t s, glm::vec3 d, float dist2) {
+    void add(glm::vec3 d, float dist2) {
         dx[size] = d.x;
         dy[size] = d.y;
         dz[size] = d.z;
-        r2[size] = dist2;
-        slot[size++] = uint8_t(s);
+        r2[size++] = dist2;
     }
     // Padding to a multiple of four with pairs at the kernel's edge, never stored.
     int padded(float h2) {
@@ -52,7 +51,7 @@ struct PairBatch {
         return (size + 3) & ~3;
     }
     // Weight, gradient and tensile term (gradient and tensile term into pair, as x, y, z, w).
-    void kernels(float h, float h2, float scorr_w, glm::vec4* pair, float* weight) {
+    void kernels(float h, float h2, float scorr_w, glm::vec4* pair) {
         const Float4 one = Float4::splat(1.0f), zero = Float4::splat(0.0f), h4 = Float4::splat(h),
                      h24 = Float4::splat(h2), tiny = Float4::splat(1e-9f), spiky = Float4::splat(-kSpikyOverPoly6),
                      scorr_w4 = Float4::splat(scorr_w), tensile = Float4::splat(-0.001f);
@@ -72,23 +71,17 @@ struct PairBatch {
             Float4 sc = tensile * ws * ws * ws * ws;  // k = 0.001, n = 4
             transpose(gx, gy, gz, sc);
             const Float4* per_pair[4] = {&gx, &gy, &gz, &sc};
-            alignas(16) float wk[4];
-            w.store(wk);
-            for (int m = 0; m < 4 && k + m < size; ++m) {
-                per_pair[m]->store(&pair[slot[k + m]].x);
-                weight[slot[k + m]] = wk[m];
-            }
+            for (int m = 0; m < 4 && k + m < size; ++m) per_pair[m]->store(&pair[k + m].x);
+            w.store(weight + k);
         }
     }
     // The weights only.
-    void weights(float h2, float* weight) {
+    void weights(float h2) {
         const Float4 one = Float4::splat(1.0f), zero = Float4::splat(0.0f), h24 = Float4::splat(h2);
         const int end = padded(h2);
         for (int k = 0; k < end; k += 4) {
             const Float4 t = one - Float4::load(r2 + k) / h24;
-            alignas(16) float wk[4];
-            select(t > zero, t * t * t, zero).store(wk);
-            for (int m = 0; m < 4 && k + m < size; ++m) weight[slot[k + m]] = wk[m];
+            select(t > zero, t * t * t, zero).store(weight + k);
         }
     }
 };
@@ -158,9 +151,6 @@ void ParticleFluid::add_particles(const std::vector<glm::vec3>& positions) {
     counts_.assign(n, uint16_t(p_.body_neighbours));
     neighbours_.resize(n * kMaxNeighbours);
     pair_.resize(n * kMaxNeighbours);
-    weight_.resize(n * kMaxNeighbours);
-    mirror_.resize(n * kMaxNeighbours);
-    back_counts_.resize(n);
     cell_of_.resize(n);
     order_.resize(n);
     scratch_.resize(n);
@@ -274,104 +264,55 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
         float c = std::max(rho * inv_rho0 - 1.0f, 0.0f);
         return -c / (grad2 + epsilon_);
     };
-    // A pair's kernels taken from the other particle's side, where this thread computed
-    // them already: the distance is the same float, the difference vector exactly its
-    // negation, so the weight and the tensile term are the same and the gradient its
-    // negation.
-    const auto mirrored = [&](uint32_t j, uint8_t slot, glm::vec4& pair, float& weight) {
-        const glm::vec4 other = pair_[j * kMaxNeighbours + slot];
-        pair = glm::vec4(-glm::vec3(other), other.w);
-        weight = weight_[j * kMaxNeighbours + slot];
-    };
-
-    // Neighbours from the grid, and the first iteration's density on the way: the
-    // distances the search takes are the ones the density needs. A thread goes through
-    // its particles in order; each particle looks through the grid only for neighbours
-    // below the thread's range or above itself, and hands itself (with its place in its
-    // own list) to those above it in the range: their neighbours below them in the
-    // range arrive that way, in order, before their turn. A list is the same whichever
-    // way its entries came, so it does not depend on the ranges.
+    // Neighbours from the grid, in index order (the cells are walked in index order and
+    // hold their particles in order), and the first iteration's density on the way: the
+    // distances the search takes are the ones the density needs. Each particle computes
+    // all its pairs itself: what the other particle has is in memory far away, and
+    // computing four kernels at a time costs no more than fetching them.
     constexpr uint32_t cap = kMaxNeighbours;
     jobs.parallel_for(n, [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) back_counts_[i] = 0;
-        uint32_t below[kMaxNeighbours];
-        uint8_t below_slot[kMaxNeighbours];
         PairBatch batch;
         const Float4 h2 = Float4::splat(h2_);
         for (size_t i = b; i < e; ++i) {
             const glm::vec3 p = pred_[i];
             const glm::ivec3 c = glm::clamp(glm::ivec3(p / h_), glm::ivec3(0), cells_ - 1);
             uint32_t* out = &neighbours_[i * kMaxNeighbours];
-            uint8_t* mirror = &mirror_[i * kMaxNeighbours];
-            glm::vec4* pair = &pair_[i * kMaxNeighbours];
-            float* weight = &weight_[i * kMaxNeighbours];
-            // The neighbours handed over sit at the start of the list until now.
-            const uint32_t handed = back_counts_[i];
-            const int kept = int(std::min(handed, cap));
-            std::copy(out, out + kept, below);
-            std::copy(mirror, mirror + kept, below_slot);
             batch.size = 0;
             uint32_t count = 0;
             const Float4 px = Float4::splat(p.x), py = Float4::splat(p.y), pz = Float4::splat(p.z);
-            // Four candidates at a time, those within the kernel taken in index order.
-            const auto search = [&](uint32_t lo, uint32_t hi, bool hand_over) {
-                for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, cells_.z - 1); ++z)
-                    for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, cells_.y - 1); ++y) {
-                        const size_t row = size_t((z * cells_.y + y) * cells_.x);
-                        const uint32_t first = std::max(cell_start_[row + size_t(std::max(c.x - 1, 0))], lo);
-                        const uint32_t last = std::min(cell_start_[row + size_t(std::min(c.x + 1, cells_.x - 1)) + 1], hi);
-                        for (uint32_t j0 = first; j0 < last; j0 += 4) {
-                            const Float4 dx = px - Float4::load(&sorted_x_[j0]);
-                            const Float4 dy = py - Float4::load(&sorted_y_[j0]);
-                            const Float4 dz = pz - Float4::load(&sorted_z_[j0]);
-                            const Float4 r2 = dx * dx + dy * dy + dz * dz;
-                            int hits = (r2 < h2).bits();
-                            if (last - j0 < 4) hits &= (1 << (last - j0)) - 1;
-                            if (!hits) continue;
-                            alignas(16) float lx[4], ly[4], lz[4], lr2[4];
-                            dx.store(lx);
-                            dy.store(ly);
-                            dz.store(lz);
-                            r2.store(lr2);
-                            for (; hits; hits &= hits - 1) {
-                                const int t = __builtin_ctz(unsigned(hits));
-                                const uint32_t j = j0 + uint32_t(t);
-                                if (count < cap) {
-                                    out[count] = j;
-                                    mirror[count] = kNoMirror;
-                                    batch.add(count, {lx[t], ly[t], lz[t]}, lr2[t]);
-                                }
-                                if (hand_over && j < e) {
-                                    uint32_t& k = back_counts_[j];
-                                    if (k < cap) {
-                                        neighbours_[j * kMaxNeighbours + k] = uint32_t(i);
-                                        mirror_[j * kMaxNeighbours + k] = count < cap ? uint8_t(count) : kNoMirror;
-                                    }
-                                    ++k;
-                                }
-                                ++count;
-                            }
+            // Four candidates at a time, those within the kernel (but the particle itself)
+            // taken in index order.
+            for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, cells_.z - 1); ++z)
+                for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, cells_.y - 1); ++y) {
+                    const size_t row = size_t((z * cells_.y + y) * cells_.x);
+                    const uint32_t first = cell_start_[row + size_t(std::max(c.x - 1, 0))];
+                    const uint32_t last = cell_start_[row + size_t(std::min(c.x + 1, cells_.x - 1)) + 1];
+                    for (uint32_t j0 = first; j0 < last; j0 += 4) {
+                        const Float4 dx = px - Float4::load(&sorted_x_[j0]);
+                        const Float4 dy = py - Float4::load(&sorted_y_[j0]);
+                        const Float4 dz = pz - Float4::load(&sorted_z_[j0]);
+                        const Float4 r2 = dx * dx + dy * dy + dz * dz;
+                        int hits = (r2 < h2).bits();
+                        if (last - j0 < 4) hits &= (1 << (last - j0)) - 1;
+                        if (i - j0 < 4) hits &= ~(1 << (i - j0));
+                        if (!hits) continue;
+                        alignas(16) float lx[4], ly[4], lz[4], lr2[4];
+                        dx.store(lx);
+                        dy.store(ly);
+                        dz.store(lz);
+                        r2.store(lr2);
+                        for (; hits; hits &= hits - 1, ++count) {
+                            const int t = __builtin_ctz(unsigned(hits));
+                            if (count >= cap) continue;
+                            out[count] = j0 + uint32_t(t);
+                            batch.add({lx[t], ly[t], lz[t]}, lr2[t]);
                         }
                     }
-            };
-            search(0, uint32_t(b), false);
-            for (int k = 0; k < kept; ++k, ++count) {
-                if (count >= cap) continue;
-                const uint32_t j = below[k];
-                out[count] = j;
-                mirror[count] = below_slot[k];
-                if (below_slot[k] != kNoMirror) {
-                    mirrored(j, below_slot[k], pair[count], weight[count]);
-                } else {
-                    const glm::vec3 d = p - pred_[j];
-                    batch.add(count, d, d.x * d.x + d.y * d.y + d.z * d.z);
                 }
-            }
-            count += handed - uint32_t(kept);
-            search(uint32_t(i) + 1, uint32_t(n), true);
-            batch.kernels(h_, h2_, scorr_w_, pair, weight);
+            glm::vec4* pair = &pair_[i * kMaxNeighbours];
+            batch.kernels(h_, h2_, scorr_w_, pair);
             counts_[i] = uint16_t(std::min<uint32_t>(count, 65535));
-            lambda_[i] = lambda_of(pair, weight, int(std::min(count, cap)));
+            lambda_[i] = lambda_of(pair, batch.weight, batch.size);
         }
     });
 
@@ -403,52 +344,37 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
             }
         });
         if (last) break;
-        // The next iteration's density; a pair with a neighbour below in this thread's
-        // range was computed on the neighbour's turn.
+        // The next iteration's density.
         jobs.parallel_for(n, [&](size_t b, size_t e) {
             PairBatch batch;
             for (size_t i = b; i < e; ++i) {
                 const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
-                const uint8_t* mirror = &mirror_[i * kMaxNeighbours];
                 const int m = std::min<int>(counts_[i], kMaxNeighbours);
-                glm::vec4* pair = &pair_[i * kMaxNeighbours];
-                float* weight = &weight_[i * kMaxNeighbours];
                 batch.size = 0;
                 for (int k = 0; k < m; ++k) {
-                    const uint32_t j = nb[k];
-                    if (mirror[k] != kNoMirror && j >= b) {
-                        mirrored(j, mirror[k], pair[k], weight[k]);
-                    } else {
-                        const glm::vec3 d = pred_[i] - pred_[j];
-                        batch.add(uint32_t(k), d, d.x * d.x + d.y * d.y + d.z * d.z);
-                    }
+                    const glm::vec3 d = pred_[i] - pred_[nb[k]];
+                    batch.add(d, d.x * d.x + d.y * d.y + d.z * d.z);
                 }
-                batch.kernels(h_, h2_, scorr_w_, pair, weight);
-                lambda_[i] = lambda_of(pair, weight, m);
+                glm::vec4* pair = &pair_[i * kMaxNeighbours];
+                batch.kernels(h_, h2_, scorr_w_, pair);
+                lambda_[i] = lambda_of(pair, batch.weight, m);
             }
         });
     }
 
-    // XSPH viscosity, reading the new velocities and writing its own. The kernel weights
-    // go to weight_ for the mirrored pairs, as in the density.
+    // XSPH viscosity, reading the new velocities and writing its own.
     jobs.parallel_for(n, [&](size_t b, size_t e) {
         PairBatch batch;
         for (size_t i = b; i < e; ++i) {
             const uint32_t* nb = &neighbours_[i * kMaxNeighbours];
-            const uint8_t* mirror = &mirror_[i * kMaxNeighbours];
             const int m = std::min<int>(counts_[i], kMaxNeighbours);
-            float* weight = &weight_[i * kMaxNeighbours];
+            const float* weight = batch.weight;
             batch.size = 0;
             for (int k = 0; k < m; ++k) {
-                const uint32_t j = nb[k];
-                if (mirror[k] != kNoMirror && j >= b) {
-                    weight[k] = weight_[j * kMaxNeighbours + mirror[k]];
-                } else {
-                    const glm::vec3 d = pred_[i] - pred_[j];
-                    batch.add(uint32_t(k), d, d.x * d.x + d.y * d.y + d.z * d.z);
-                }
+                const glm::vec3 d = pred_[i] - pred_[nb[k]];
+                batch.add(d, d.x * d.x + d.y * d.y + d.z * d.z);
             }
-            batch.weights(h2_, weight);
+            batch.weights(h2_);
             glm::vec3 dv(0.0f);
             float wsum = 0.0f;
             for (int k = 0; k < m; ++k) {

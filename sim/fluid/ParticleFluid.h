@@ -3,10 +3,9 @@
 // x, y, z in [0, size], y up. Neighbours come from a uniform grid rebuilt each tick;
 // particles are kept sorted by cell so neighbour loops walk memory in order. Every
 // parallel loop writes only the particles of its own thread's range and reads other
-// ranges only where no one writes during the loop (Jacobi); within a range a pair's
-// kernels computed on the lower particle's turn are taken, not recomputed, on the
-// higher's, the same bits (ParticleFluid.cpp), so the result is the same for any
-// thread count.
+// ranges only where no one writes during the loop (Jacobi), and each particle computes
+// its own pairs, so the result is the same for any thread count. The hot loops work on
+// four floats at a time (sim/core/Float4.h), each with its scalar form's operations.
 #include <cstdint>
 #include <vector>
 
@@ -69,7 +68,6 @@ public:
 
 private:
     static constexpr int kMaxNeighbours = 64;
-    static constexpr uint8_t kNoMirror = 0xff;
 
     void collide(glm::vec3& x, const std::vector<FluidSphere>& spheres) const;
     void sort_by_cell();
@@ -81,14 +79,7 @@ private:
     std::vector<float> lambda_;
     std::vector<uint16_t> counts_;
     std::vector<uint32_t> neighbours_;  // kMaxNeighbours per particle
-    // Per neighbour, this iteration's: the kernel gradient and the tensile term (w), and
-    // the kernel weight.
-    std::vector<glm::vec4> pair_;
-    std::vector<float> weight_;
-    // Per neighbour below in the search's thread range: the particle's place in that
-    // neighbour's list (kNoMirror: not there, or not such a neighbour).
-    std::vector<uint8_t> mirror_;
-    std::vector<uint32_t> back_counts_;  // neighbours handed over during the search
+    std::vector<glm::vec4> pair_;  // per neighbour: this iteration's kernel gradient and tensile term (w)
     std::vector<uint32_t> cell_start_;  // cells + 1 prefix sums
     std::vector<uint32_t> cell_of_, order_, cell_fill_;
     std::vector<glm::vec3> scratch_;
