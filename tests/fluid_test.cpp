@@ -21,6 +21,7 @@
 #include "SimTestLevel.h"
 #include "game/level/LevelError.h"
 #include "game/session/GameSession.h"
+#include "sim/core/Hash.h"
 #include "sim/core/JobPool.h"
 #include "sim/fluid/AnisotropicKernels.h"
 #include "sim/fluid/FluidScenes.h"
@@ -239,6 +240,34 @@ TEST(AnisotropicKernels, TheSameOnAPoolOfThreads) {
         EXPECT_EQ(alone[i].centre, shared[i].centre);
         for (int k = 0; k < 3; ++k) EXPECT_EQ(alone[i].axis[k], shared[i].axis[k]);
     }
+}
+
+// The ellipsoids of a splash pinned bit for bit (the splash of
+// SplashAndOverpackedBlockKeepTheirRecordedHashes): recorded before the particles of a
+// grid cell were summed four at a time, one in each SIMD element; with 1 and 3 threads.
+TEST(AnisotropicKernels, KeepTheirRecordedBits) {
+    sim::JobPool one(1);
+    sim::ParticleFluidParams p;
+    p.box_size_m = {0.8f, 0.8f, 0.8f};
+    p.ceiling_m = 1.6f;
+    p.particle_radius_m = 0.025f;
+    sim::ParticleFluid splash(p);
+    splash.set_boxes({{{0.5f, 0.0f, 0.0f}, {0.8f, 0.15f, 0.8f}}});
+    splash.add_particles(sim::fill_block({0, 0, 0}, {0.5f, 0.8f, 0.8f}, p.particle_radius_m, 1500, 3));
+    sim::FluidSphere s{{0.25f, 0.7f, 0.4f}, {0.5f, -6.0f, 0.0f}, 0.1f};
+    for (int t = 0; t < 30; ++t) {
+        s.centre += s.velocity * kDt;
+        splash.step(kDt, {1.0f, -9.81f, 0.0f}, {s}, one);
+    }
+    sim::AnisotropyParams a;
+    a.particle_radius_m = p.particle_radius_m;
+    a.neighbourhood_m = 8.0f * p.particle_radius_m;
+    std::vector<sim::FluidEllipsoid> alone, shared;
+    sim::anisotropic_kernels(splash.positions(), a, alone);
+    sim::JobPool three(3);
+    sim::anisotropic_kernels(splash.positions(), a, shared, &three);
+    EXPECT_EQ(sim::hash_words(alone.data(), alone.size() * sizeof(alone[0])), 0x3eddc3d4f4d5c05eull);
+    EXPECT_EQ(sim::hash_words(shared.data(), shared.size() * sizeof(shared[0])), 0x3eddc3d4f4d5c05eull);
 }
 
 // A stone of 25 cm dropped from 4.5 m above the test tank's floor, over its middle.
