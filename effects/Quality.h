@@ -18,7 +18,7 @@ struct QualitySettings {
     bool ground_detail = true;     // the ground's fine noise octave
     int fluid_smoothing_max = 64;  // cap on the tank's depth smoothing iterations
     int fluid_kernel_max = 64;     // and on its kernel's width in pixels (odd)
-    int rain_map_width = 1024;     // the windshield's drop height map (half as tall)
+    int rain_map_width = 768;      // the windshield's drop height map (half as tall)
     bool bloom = true;             // the energy glow's bloom
     int dust_max_shells = 12;      // shells per dusty prop up close
     int mirror_width = 160;        // the rear-view mirror's picture of the view behind, a

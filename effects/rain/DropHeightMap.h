@@ -9,16 +9,17 @@
 // hemisphere of its radius) and for two equal drops meeting, and follows the CPU 3D
 // reference (MetaballReference) to 2.9 degrees on the merged-drop scene.
 //
-// Per frame: clear and splat the sums (instanced quads, additive RGBA16F, depth-tested
-// against the wet tiles marked in a depth buffer: 5-7% off the splat); then the
-// height pass (to R32F) and the normals pass (one gather of the texel and its right
-// and upper neighbours), both only over the tiles where water can be (drops_by_tile's
-// `wet` runs, WetTiles), their targets cleared elsewhere. Measured under llvmpipe on
-// the bench's merged-drop scene: 37% of the tiles, and the two passes cost 0.64 of
-// full-screen ones (a texel costs more in small triangles than in one covering whole
-// bins). Shading the two passes as one, from the sums at the three texels, gives the
-// same surface bit for bit but costs about 1.6 times the separate passes (the branch
-// for dry texels saves nothing there: every texel pays three fetches and heights).
+// Per frame only the splat: clear and splat the sums (instanced quads, additive
+// RGBA16F, depth-tested against the wet tiles marked in a depth buffer: 5-7% off the
+// splat). The windshield takes the height and the normal per pixel from the sums read
+// bilinearly at the pixel and one texel along u and v (shaders/rain/drop_shape.glsl):
+// the density field is smooth where the height is not, so a map coarser than the
+// pixels still gives round, sharp outlines and smooth normals, and no per-texel pass
+// runs in the frame. surface() takes the same function per texel (at the texel
+// centres, where the filtered sums are the texel's own) for the tests and the bench,
+// over the wet tiles (drops_by_tile's `wet` runs, WetTiles) and cleared elsewhere.
+// Before, the frame ran a height pass and a normals pass over the wet tiles and the
+// windshield filtered their results (docs/effects/rain.md, "Benchmarks").
 // An octagon around the reach circle instead of the splat's square shades 17% fewer
 // texels but measured slower (more, smaller triangles) and changes the sums' last bits.
 //
@@ -52,13 +53,20 @@ class DropHeightMap {
 public:
     DropHeightMap(int width, int height);
 
-    // Splats the metaballs over a glass of glass_size_m (radii times radius_scale),
-    // then takes heights (compressed if asked) and normals. Leaves the GL viewport and framebuffer changed.
+    // Splats the metaballs over a glass of glass_size_m (radii times radius_scale); their
+    // heights are taken with `compression`. Leaves the GL viewport and framebuffer changed.
     void update(std::span<const RainMetaball> metaballs, glm::vec2 glass_size_m, float radius_scale,
                 const HeightCompression& compression = {});
 
-    // rg: the normal's u and v components (z is implied), b: height in mm, a: 1 on water.
-    const gl::Texture& surface() const { return surface_; }
+    // The sums over drops of N, N^2 R (mm), N^2 x^2, N^2; linear filtering.
+    const gl::Texture& sums() const { return sums_; }
+    // Sets drop_shape.glsl's uniforms on `program` (the threshold and the compression)
+    // and u_texel_mm, one texel of the map in glass millimetres, for the last update.
+    void set_shape(const gl::Program& program) const;
+    // The surface per texel as the windshield takes it (rg: the normal's u and v
+    // components, z implied; b: height in mm; a: 1 on water), made from the last update
+    // on the first call after it. Leaves the GL viewport and framebuffer changed.
+    const gl::Texture& surface();
     // The last update's tiles: `wet` says where the surface can hold water.
     const DropTiles& tiles() const { return tiles_; }
     int width() const { return width_; }
@@ -68,14 +76,16 @@ private:
     int width_, height_;
     gl::Texture surface_;
     gl::Texture sums_;     // sums over drops of N, N^2 R (mm), N^2 x^2, N^2
-    gl::Texture heights_;  // R32F mm: the normals pass gathers a texel and its neighbours at once
-    gl::Framebuffer sums_fbo_, heights_fbo_, surface_fbo_;
+    gl::Framebuffer sums_fbo_, surface_fbo_;
     gl::Texture wet_depth_;  // the wet tiles marked, for the splats' depth test
-    gl::Program splat_, shape_, normals_, mark_;
+    gl::Program splat_, shape_, mark_;
     gl::VertexArray vao_;
     gl::Buffer instances_;
     DropTiles tiles_;
     WetTiles wet_;
+    glm::vec2 glass_size_m_{1.0f};
+    HeightCompression compression_;
+    bool surface_made_ = false;  // surface_ holds the last update's
 };
 
 }  // namespace effects

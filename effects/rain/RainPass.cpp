@@ -100,7 +100,9 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     shade_.set("u_film_scale", view.film_cell_m > 0.0f ? glm::vec2(1.0f / (float(film_cols_) * view.film_cell_m),
                                                                    1.0f / (float(film_rows_) * view.film_cell_m))
                                                        : glm::vec2(0.0f));
-    shade_.set("u_surface", 0);
+    shade_.set("u_sums", 0);
+    shade_.set("u_map_texel", glm::vec2(1.0f / float(height_map_.width()), 1.0f / float(height_map_.height())));
+    height_map_.set_shape(shade_);
     shade_.set("u_behind", 1);
     shade_.set("u_film_map", 2);
     const int blades = int(std::min<size_t>(view.blades.size(), 2));
@@ -114,7 +116,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
         shade_.set(kSpan[b], glm::vec2(w.inner_m, w.outer_m));
     }
     for (int b = blades; b < 2; ++b) shade_.set(kSpan[b], glm::vec2(0.0f));
-    height_map_.surface().bind(0);
+    height_map_.sums().bind(0);
     t.colour_copy().bind(1);
     behind_sampler_.bind(1);
     film_.bind(2);

@@ -52,7 +52,7 @@ private:
     void upload_film(const RainView& view);
 
     DropHeightMap height_map_;
-    int made_width_, made_height_;  // the size asked for at construction: the high preset's
+    int made_width_, made_height_;  // the size asked for at construction: the most the map grows to
     gl::Program shade_;
     std::unique_ptr<WindshieldMesh> mesh_;
     // The scene copy's mips read trilinearly, for the out-of-focus refraction.

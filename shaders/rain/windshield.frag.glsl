@@ -1,5 +1,6 @@
 #version 450 core
 #include "common/sky.glsl"
+#include "rain/drop_shape.glsl"
 // Rain on the windshield seen from the driver's seat (seed 5.4, docs/effects/rain.md).
 // A drop is a small lens: its lookup into the scene behind moves against its tilt by
 // more than its own size, so it holds the scene flipped and shrunk (the road in its
@@ -8,7 +9,9 @@
 // antialiased from the height field; the streak a runner leaves is a faint film that
 // blurs and brightens the view and dries. Plain glass is left as it is. The wiper
 // blades are drawn on top.
-uniform sampler2D u_surface;   // rg normal u, v; b height mm; a water
+uniform sampler2D u_sums;      // the drops' splatted sums (DropHeightMap), bilinear
+uniform vec2 u_map_texel;      // one texel of the sums' map, in texture coordinates
+uniform vec2 u_texel_mm;       // and in glass millimetres
 uniform sampler2D u_behind;    // the finished scene, with mips
 uniform sampler2D u_film_map;  // per glass cell: 1 where a drop just ran, 0 dry
 uniform vec2 u_glass_size_m;
@@ -55,7 +58,11 @@ float blades(vec2 p, out float arm) {
 void main() {
     float arm;
     float blade = blades(v_uv_m, arm);
-    vec4 s = texture(u_surface, v_uv_m / u_glass_size_m);
+    // The drops' surface here (drop_shape.glsl): the height from the sums filtered at
+    // the pixel, the normal from them one map texel further along u and v.
+    vec2 uv = v_uv_m / u_glass_size_m;
+    vec4 s = drop_surface(texture(u_sums, uv), texture(u_sums, uv + vec2(u_map_texel.x, 0.0)),
+                          texture(u_sums, uv + vec2(0.0, u_map_texel.y)), u_texel_mm);
     // Coverage from the height field: the outline where the (bilinear) height leaves 0,
     // spread over one pixel's change of height, so edges are antialiased at any scale.
     float cover = clamp(s.b / max(fwidth(s.b), 1e-3), 0.0, 1.0);
@@ -65,8 +72,8 @@ void main() {
     vec2 gx = dFdx(v_uv_m), gy = dFdy(v_uv_m);
     float det = gx.x * gy.y - gy.x * gx.y;
 
-    // The wet texels' tilt (dry ones filter in as 0 on both rg and a), at most 1.
-    vec2 tilt = s.rg / max(s.a, 1e-3);
+    // The tilt (0 on dry glass), at most 1.
+    vec2 tilt = s.rg;
     float t2 = min(dot(tilt, tilt), 1.0);
     tilt *= inversesqrt(max(dot(tilt, tilt), 1e-8)) * sqrt(t2);
     vec2 dir_px = sign(det) * vec2(gy.y * tilt.x - gy.x * tilt.y, -gx.y * tilt.x + gx.x * tilt.y);
