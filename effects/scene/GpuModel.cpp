@@ -1,10 +1,14 @@
 #include "effects/scene/GpuModel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <numeric>
 #include <utility>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 namespace effects {
 
@@ -58,6 +62,25 @@ void GpuModel::draw_range(const gl::Program& program, bool depth_only, const Ran
     }
     glDrawElements(GL_TRIANGLES, r.index_count, GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(r.first_index * sizeof(uint32_t)));
+}
+
+glm::vec3 GpuModel::part_centre(std::string_view mesh) const {
+    for (const Range& r : ranges_)
+        if (r.name == mesh) return r.centre;
+    return glm::vec3(0.0f);
+}
+
+std::vector<size_t> GpuModel::part_order(const std::optional<glm::vec3>& eye) const {
+    std::vector<size_t> order(ranges_.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    if (!eye) return order;
+    std::vector<float> key(ranges_.size());
+    for (size_t i = 0; i < ranges_.size(); ++i) {
+        const float d = glm::distance(*eye, glm::clamp(*eye, ranges_[i].lo, ranges_[i].hi));
+        key[i] = d > 0.0f ? d : std::numeric_limits<float>::infinity();
+    }
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key[a] < key[b]; });
+    return order;
 }
 
 Model make_sphere_model(int rings, int segments) {

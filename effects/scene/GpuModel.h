@@ -1,7 +1,9 @@
 #pragma once
 // A model uploaded to the GPU: one vertex and one index buffer, a draw range per mesh.
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -27,16 +29,23 @@ public:
     void draw_visible(const gl::Program& program, bool depth_only, const Frustum& view,
                       const glm::mat4& model_to_world, bool skip_level_meshes = false,
                       const std::function<bool(glm::vec3, glm::vec3)>& select = {}) const;
-    // The same, with each mesh placed by `place(mesh_name, mesh_centre)` first (moving
-    // parts: a car's wheels).
+    // Every mesh, each placed by `place(mesh_name, mesh_centre)` first (moving parts: a
+    // car's wheels). With `eye` (model space) the meshes nearest it come first, so that
+    // the early depth test spares what they hide its shading, and those whose box holds
+    // the eye last: shells around it (the car's body seen from the driver's seat), behind
+    // everything inside them. Without, in the model's order.
     template <class Place>
-    void draw_parts(const gl::Program& program, bool depth_only, Place&& place) const {
+    void draw_parts(const gl::Program& program, bool depth_only, Place&& place,
+                    const std::optional<glm::vec3>& eye = std::nullopt) const {
         vao_.bind();
-        for (const Range& r : ranges_) {
+        for (const size_t i : part_order(eye)) {
+            const Range& r = ranges_[i];
             place(r.name, r.centre);
             draw_range(program, depth_only, r);
         }
     }
+    // The centre of the named mesh's box (model space; the origin if there is none).
+    glm::vec3 part_centre(std::string_view mesh) const;
     const std::string& name() const { return name_; }
 
 private:
@@ -50,6 +59,7 @@ private:
         glm::vec3 lo, hi;  // the bounding box
     };
     void draw_range(const gl::Program& program, bool depth_only, const Range& r) const;
+    std::vector<size_t> part_order(const std::optional<glm::vec3>& eye) const;
     std::string name_;
     gl::Buffer vertices_, indices_;
     gl::VertexArray vao_;

@@ -29,7 +29,8 @@ void OpaquePass::render(const FrameContext& frame) {
         SceneGeometry::Select select;
         if (line_lights)
             select = [&lighting, lit](glm::vec3 lo, glm::vec3 hi) { return lighting.line_lights_reach(lo, hi) == lit; };
-        frame.scene.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, view, select);
+        frame.scene.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, view, select,
+                                  SceneGeometry::Car::Drawn, frame.camera.eye);
     }
 
     // Sky last, only where nothing was drawn.

@@ -79,7 +79,7 @@ void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
 }
 
 void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const FramePoses& poses, Use use,
-                         const Frustum& view, const Select& select, Car car) const {
+                         const Frustum& view, const Select& select, Car car, const std::optional<glm::vec3>& eye) const {
     const bool depth_only = use != Use::Shading;
     auto kept = [&](glm::vec3 lo, glm::vec3 hi) { return !view.outside(lo, hi) && (!select || select(lo, hi)); };
     auto material = [&](glm::vec4 tint) {
@@ -87,7 +87,7 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     };
     p.use();
     material(glm::vec4(1.0f));
-    if (use != Use::StillShadowCasters) draw_moving(p, poses, depth_only, view, select, car);
+    if (use != Use::StillShadowCasters) draw_moving(p, poses, depth_only, view, select, car, eye);
     if (use == Use::MovingShadowCasters) return;
     material(glm::vec4(1.0f));
     for (size_t i = 0; i < desc_.props.size(); ++i) {
@@ -106,7 +106,8 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
 }
 
 void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, bool depth_only,
-                                const Frustum& view, const Select& select, Car car) const {
+                                const Frustum& view, const Select& select, Car car,
+                                const std::optional<glm::vec3>& eye) const {
     auto selected = [&](const Model& m, const glm::mat4& transform) {
         if (!select) return true;
         const auto [lo, hi] = world_box(m, transform);
@@ -116,6 +117,11 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
         if (!depth_only) p.set("u_tint", tint);
     };
     // The cabin's lining sees the sky only through the glass: mesh.frag.glsl's u_cabin_lining.
+    // The eye in a vehicle's model space, for its parts' order.
+    auto eye_in = [&](const glm::mat4& transform) -> std::optional<glm::vec3> {
+        if (!eye) return std::nullopt;
+        return glm::vec3(glm::inverse(transform) * glm::vec4(*eye, 1.0f));
+    };
     auto lining = [&](const std::string& mesh) {
         if (!depth_only) p.set("u_cabin_lining", mesh == "headliner" || mesh == "sun_visors" || mesh == "pillars" ? 1.0f : 0.0f);
     };
@@ -128,11 +134,10 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
         auto turned_about = [&](glm::vec3 pivot, float angle, glm::vec3 axis) {
             return glm::translate(glm::rotate(glm::translate(body, pivot), angle, axis), -pivot);
         };
-        glm::vec3 dial_centre(0.0f), wheel_centre(0.0f);
-        models_[size_t(desc_.car_model)]->draw_parts(p, depth_only, [&](const std::string& mesh, glm::vec3 centre) {
+        const GpuModel& car_model = *models_[size_t(desc_.car_model)];
+        const glm::vec3 dial_centre = car_model.part_centre("speedo_dial"), wheel_centre = car_model.part_centre("steering_wheel");
+        car_model.draw_parts(p, depth_only, [&](const std::string& mesh, glm::vec3 centre) {
             lining(mesh);
-            if (mesh == "speedo_dial") dial_centre = centre;
-            if (mesh == "steering_wheel") wheel_centre = centre;
             if (mesh == "speedo_needle")
                 return place(p, turned_about(dial_centre, cabin::speedo_needle_rad(poses.car_speed_mps), cabin::dial_axis()), depth_only);
             if (mesh == "steering_wheel")
@@ -146,7 +151,7 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
             if (front) m = glm::rotate(m, poses.car_steer_rad, glm::vec3(0.0f, 1.0f, 0.0f));
             m = glm::rotate(m, -poses.car_wheel_spin_rad, glm::vec3(0.0f, 0.0f, 1.0f));  // rolling forward
             place(p, glm::translate(m, -centre), depth_only);
-        });
+        }, eye_in(body));
         lining("");
     }
     if (desc_.boat_model >= 0 && selected(desc_.models[size_t(desc_.boat_model)], poses.boat.matrix())) {
@@ -157,7 +162,7 @@ void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, b
             const glm::mat4 m = glm::rotate(glm::translate(hull, centre), cabin::helm_wheel_rad(poses.boat_steer),
                                             cabin::helm_axis());
             place(p, glm::translate(m, -centre), depth_only);
-        });
+        }, eye_in(hull));
     }
     for (const FramePoses::Object& o : poses.objects) {
         const glm::vec3 lo = o.position - o.radius_m, hi = o.position + o.radius_m;

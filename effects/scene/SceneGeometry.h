@@ -3,6 +3,7 @@
 // objects, drawn the same way by the shadow and the opaque passes.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "effects/gl/Program.h"
@@ -31,10 +32,12 @@ public:
     enum class Car { Drawn, LeftOut };
     // What `view` can see (and `select` keeps), nearest kinds first (the vehicles, thrown
     // objects, props, then the ground) so that the early depth test spares hidden pixels
-    // their shading. Shading the car, sets u_cabin_lining per mesh (mesh.frag.glsl) and
-    // leaves it 0.
+    // their shading; given the `eye`, the vehicles' parts nearest it first too
+    // (GpuModel::draw_parts). Shading the car, sets u_cabin_lining per mesh
+    // (mesh.frag.glsl) and leaves it 0.
     void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
-              const Frustum& view, const Select& select = {}, Car car = Car::Drawn) const;
+              const Frustum& view, const Select& select = {}, Car car = Car::Drawn,
+              const std::optional<glm::vec3>& eye = std::nullopt) const;
     // The level's props alone: what stays put, for the top-down sky occlusion.
     void draw_props(const gl::Program& program, bool depth_only) const;
     // World-space bounds of the props (min = max = 0 without any).
@@ -50,7 +53,7 @@ public:
 private:
     // The car, the boat and the thrown objects.
     void draw_moving(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view,
-                     const Select& select, Car car) const;
+                     const Select& select, Car car, const std::optional<glm::vec3>& eye) const;
     // The objectives' gates and targets: they change with the tick, so they cast their
     // shadows with what moves.
     void draw_markers(const gl::Program& program, const FramePoses& poses, bool depth_only, const Frustum& view,
