@@ -21,7 +21,7 @@ struct WaterLook {
     float ripples = 1.0f;           // wind ripples on top of the grid's waves
     float sheet_thickness_m = 0.02f;   // at rest; it thins as the sheet stretches
     float sheet_tear_stretch = 12.0f;   // sheet triangles stretched beyond this (linear) have torn
-    float triangle_px = 12.0f;      // the wave lattice coarsens far away to about this size
+    float triangle_px = 20.0f;      // the wave lattice coarsens far away to about this size
     SprayLook spray;
 };
 
