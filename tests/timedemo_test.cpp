@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "game/bench/TrivialFill.h"
 #include "game/play/Timedemo.h"
 
 namespace {
@@ -22,6 +23,13 @@ game::FrameRecord frame(double ms, float scale, int ticks) {
 }
 
 }  // namespace
+
+TEST(Timedemo, TheFillIsTheMedianOfTheSamplesFromBothEndsOfTheRun) {
+    // Two levels, as the fill reads on llvmpipe: the median follows the more common one.
+    EXPECT_DOUBLE_EQ(game::median_ms({1.4, 0.7, 0.7, 1.3, 0.7}), 0.7);
+    EXPECT_DOUBLE_EQ(game::median_ms({1.4, 0.7, 1.3, 0.7}), 1.3);
+    EXPECT_DOUBLE_EQ(game::median_ms({}), 0.0);
+}
 
 TEST(Timedemo, PercentilesAreNearestRankOverTheFrames) {
     game::TimedemoRun run;

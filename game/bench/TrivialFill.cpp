@@ -12,7 +12,7 @@
 
 namespace game {
 
-double trivial_fill_ms(int width, int height, int repeats) {
+std::vector<double> trivial_fill_samples(int width, int height, int repeats) {
     const effects::gl::Program fill = effects::gl::Program::from_sources(
         "trivial_fill",
         {{GL_VERTEX_SHADER,
@@ -40,8 +40,13 @@ double trivial_fill_ms(int width, int height, int repeats) {
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-    return ms[ms.size() / 2];
+    return ms;
+}
+
+double median_ms(std::vector<double> samples) {
+    if (samples.empty()) return 0.0;
+    std::nth_element(samples.begin(), samples.begin() + samples.size() / 2, samples.end());
+    return samples[samples.size() / 2];
 }
 
 }  // namespace game
