@@ -1,7 +1,8 @@
 #pragma once
-// The frame: the frame data gathered once, then the passes of PassList.cpp it holds, in
-// the table's order, over shared scene resources, each in a debug group and timed. The
-// only place passes are run: the game, the replays, the render stage and the benches.
+// The frame: the frame data gathered once (and its line lights uploaded), then the
+// passes of PassList.cpp it holds, in the table's order, over shared scene resources,
+// each in a debug group and timed. The only place passes are run: the game, the
+// replays, the render stage and the benches.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -34,6 +35,7 @@ struct FrameRequest {
     std::optional<Camera> camera;        // instead of the poses' camera at the output's aspect
     std::optional<WeatherLook> weather;  // instead of the world's
     std::optional<SkyState> sky;         // instead of the sky under the weather
+    std::optional<EnergyView> energy;    // instead of the world's shots (their glow and line lights)
 };
 
 class Renderer {
@@ -87,6 +89,7 @@ private:
     ParamRegistry params_;
     glm::vec3 sun_dir_;
     ShadowFraming shadow_framing_;
+    BeamLighting beam_lighting_;
     glm::mat4 sky_occlusion_view_proj_;  // the props stay put
     Quality quality_ = Quality::High;
     float render_scale_ = 1.0f;

@@ -12,7 +12,6 @@ using game::StageOptions;
 inline const StagePasses kEnvironmentPass = StagePasses::of({"environment"});
 inline const StagePasses kShadowPass = StagePasses::of({"shadow"});
 inline const StagePasses kSkyOcclusionPass = StagePasses::of({"sky occlusion"});
-inline const StagePasses kEnergyLightPass = StagePasses::of({"energy_lights"});
 inline const StagePasses kOpaquePass = StagePasses::of({"opaque"});
 inline const StagePasses kDustPass = StagePasses::of({"dust"});
 inline const StagePasses kSceneCopyPass = StagePasses::of({"scene_copy"});

@@ -17,8 +17,8 @@ void OpaquePass::render(const FrameContext& frame) {
     if (normals) glClearBufferfv(GL_COLOR, 1, clear_normal);
     glClear(GL_DEPTH_BUFFER_BIT);
 
-    const SceneLighting& lighting = frame.scene.lighting;
-    const bool line_lights = lighting.has_line_lights();
+    const std::vector<LineLight>& lights = frame.data.line_lights;
+    const bool line_lights = !lights.empty();
     const Frustum view(frame.camera.view_proj);
     // With beams flying, what they reach is drawn with the line-light sum and the rest
     // without it: the sum is a lit pixel's costliest loop, and a beam lights a few
@@ -28,7 +28,7 @@ void OpaquePass::render(const FrameContext& frame) {
         const LitScene::Programs p = scene_.programs(frame, frame.scene.quality, lit, normals, frame.camera);
         SceneGeometry::Select select;
         if (line_lights)
-            select = [&lighting, lit](glm::vec3 lo, glm::vec3 hi) { return lighting.line_lights_reach(lo, hi) == lit; };
+            select = [&lights, lit](glm::vec3 lo, glm::vec3 hi) { return line_lights_reach(lights, lo, hi) == lit; };
         frame.scene.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, view, select);
     }
 

@@ -78,7 +78,7 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     }
 
     // Shading, once per water pixel.
-    shading_.select_programs(frame.scene.quality, frame.scene.lighting.has_line_lights());
+    shading_.select_programs(frame.scene.quality, !frame.data.line_lights.empty());
     for (const gl::Program* p : {&shading_.sea_program(), &shading_.sheet_program()}) {
         frame.scene.lighting.apply(*p, frame.data);
         p->set("u_inv_view_proj", cam.inv_view_proj);
