@@ -62,12 +62,12 @@ void EnergyPass::render(const FrameContext& frame) {
 void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {
     if (segments.empty()) return;
     const SceneTargets& t = frame.scene.targets;
-    if (t.colour().id() != colour_id_) {
+    if (generation_ != t.generation()) {
         // Colour only: the pass samples the scene depth, so it is not attached.
         fbo_ = gl::Framebuffer::create("energy");
         fbo_.attach_colour(0, t.colour());
         fbo_.check_complete();
-        colour_id_ = t.colour().id();
+        generation_ = t.generation();
     }
     fbo_.bind();
     glViewport(0, 0, t.width(), t.height());
