@@ -41,4 +41,9 @@ public:
         return ldr();
     }
     game::ImageRGBA8 render(const sim::CameraView& view, const StageFrame& f = {}) { return render(camera(view), f); }
+    game::ImageRGBA8 render_as_game(const StageFrame& f = {}) {
+        game::RenderStage::draw_as_game(f);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        return ldr();
+    }
 };

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "game/capture/Readback.h"
+#include "sim/player/CameraRig.h"
 
 namespace game {
 
@@ -50,6 +51,12 @@ effects::FrameContext RenderStage::context(const effects::Camera& camera, double
 
 void RenderStage::draw(const effects::Camera& camera, const StageFrame& f) {
     renderer_.render(world(), output_.output(), effects::capture_poses(world()), request(camera, f));
+}
+
+void RenderStage::draw_as_game(StageFrame f) {
+    const sim::World& w = world();
+    if (!f.time_s) f.time_s = double(w.tick()) * sim::kTickSeconds;
+    draw(camera(w.get<sim::CameraRig>().view()), f);
 }
 
 effects::SkyState RenderStage::sky() const {

@@ -46,6 +46,9 @@ public:
 
     // Runs the held passes, less the frame's skipped ones, through the renderer.
     void draw(const effects::Camera& camera, const StageFrame& f = {});
+    // The same as the game draws it: from the world's camera, at the world's time unless
+    // the frame says otherwise.
+    void draw_as_game(StageFrame f = {});
 
     // The weather every frame is drawn under, instead of the world's (none: the world's).
     void set_weather(std::optional<effects::WeatherLook> weather) { weather_ = weather; }
