@@ -1,6 +1,6 @@
 #pragma once
 // The frame: the frame data gathered once (and its line lights uploaded), then the
-// passes of PassList.cpp it holds, in the table's order, over shared scene resources,
+// passes of PassList.cpp it holds, in the table's order, over shared render resources,
 // each in a debug group and timed. The only place passes are run: the game, the
 // replays, the render stage and the benches.
 #include <functional>
@@ -67,7 +67,7 @@ public:
     static constexpr float kMinRenderScale = 0.25f;
 
     const SceneTargets& targets() const { return resources_.targets; }
-    SceneResources& resources() { return resources_; }
+    RenderResources& resources() { return resources_; }
     const FrameData& frame_data() const { return data_; }  // the last frame's
     // Whether the frame draws world normals into targets() (SceneTargets::write_normals):
     // off unless a capture reads them.
@@ -80,7 +80,7 @@ public:
     gl::TimingMode timing() const { return timer_->mode(); }
 
 private:
-    SceneResources resources_;
+    RenderResources resources_;
     FrameData data_;  // gathered once a frame, before the passes
     Camera camera_;   // the frame's
     std::vector<std::unique_ptr<Pass>> passes_;

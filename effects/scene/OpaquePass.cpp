@@ -7,8 +7,8 @@ namespace effects {
 OpaquePass::OpaquePass() : scene_("opaque") {}
 
 void OpaquePass::render(const FrameContext& frame) {
-    SceneTargets& t = frame.scene.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
+    SceneTargets& t = frame.resources.targets;
+    glBindFramebuffer(GL_FRAMEBUFFER, t.hdr().id());
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state({.depth_test = true, .depth_write = true, .cull_back_faces = true});
     const bool normals = t.writes_normals();
@@ -25,11 +25,11 @@ void OpaquePass::render(const FrameContext& frame) {
     // metres around it.
     for (const bool lit : {true, false}) {
         if (lit && !line_lights) continue;
-        const LitScene::Programs p = scene_.programs(frame, frame.scene.quality, lit, normals, frame.camera);
+        const LitScene::Programs p = scene_.programs(frame, frame.resources.quality, lit, normals, frame.camera);
         SceneGeometry::Select select;
         if (line_lights)
             select = [&lights, lit](glm::vec3 lo, glm::vec3 hi) { return line_lights_reach(lights, lo, hi) == lit; };
-        frame.scene.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, view, select);
+        frame.resources.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, view, select);
     }
 
     // Sky last, only where nothing was drawn.

@@ -66,9 +66,9 @@ effects::SkyState RenderStage::sky() const {
 }
 
 ImageRGBA32F RenderStage::hdr() const {
-    return read_framebuffer_rgba32f(renderer_.targets().scene().id(), GL_COLOR_ATTACHMENT0, width_, height_);
+    return read_framebuffer_rgba32f(renderer_.targets().hdr().id(), GL_COLOR_ATTACHMENT0, width_, height_);
 }
 
-std::vector<float> RenderStage::depth() const { return read_depth(renderer_.targets().scene().id(), width_, height_); }
+std::vector<float> RenderStage::depth() const { return read_depth(renderer_.targets().hdr().id(), width_, height_); }
 
 }  // namespace game

@@ -70,7 +70,7 @@ public:
         throw std::logic_error("the stage does not hold that pass");
     }
     sim::World& world() { return *session_.world; }
-    effects::SceneResources& scene() { return renderer_.resources(); }
+    effects::RenderResources& resources() { return renderer_.resources(); }
     effects::Renderer& renderer() { return renderer_; }
     const FrameCapture& output() const { return output_; }
 
