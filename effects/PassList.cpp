@@ -6,7 +6,6 @@
 #include <string>
 
 #include "effects/dust/DustPass.h"
-#include "effects/energy/EnergyLightPass.h"
 #include "effects/energy/EnergyPass.h"
 #include "effects/fluid/FluidPass.h"
 #include "effects/rain/RainPass.h"
@@ -41,8 +40,6 @@ const std::vector<PassEntry>& pass_table() {
         {"shadow", {.reads = {Sky}, .writes = {ShadowMap}}, make<ShadowPass>},
         // Once: the props stay put.
         {"sky occlusion", {.writes = {SkyOcclusion}}, make<SkyOcclusionPass>},
-        // Before anything is lit.
-        {"energy_lights", {.reads = {Shots}, .writes = {LineLights}}, make<EnergyLightPass>},
         {"opaque",
          {.reads = {Sky, EnvironmentCube, ShadowMap, SkyOcclusion, LineLights}, .writes = {SceneColour, Normals, Depth}},
          make<OpaquePass>},

@@ -22,6 +22,8 @@ Renderer::Renderer(const SceneDesc& scene, const sim::World& world, RendererOpti
         if (options.passes.contains(i)) pass_indices_.push_back(i);
     params_.add("shadow", "half extent (m)", &shadow_framing_.half_extent_m, 20.0f, 200.0f);
     params_.add("shadow", "centre ahead (m)", &shadow_framing_.ahead_m, 0.0f, 100.0f);
+    params_.add("energy", "light per strength", &beam_lighting_.intensity_per_strength, 0.0f, 400.0f);
+    params_.add("energy", "light reach m", &beam_lighting_.reach_m, 1.0f, 40.0f);
     for (auto& p : passes_) p->register_params(params_);
 }
 
@@ -58,9 +60,13 @@ FrameContext Renderer::prepare(const sim::World& world, RenderOutput output, con
                        .shadow_map_size = resources_.quality.shadow_map_size,
                        .shadow_framing = shadow_framing_,
                        .sky_occlusion_view_proj = sky_occlusion_view_proj_,
+                       .beam_lighting = beam_lighting_,
                        .weather = request.weather,
-                       .sky = request.sky},
+                       .sky = request.sky,
+                       .energy = request.energy},
                       data_);
+    // Once, for every lit pass to bind (SceneLighting::apply).
+    resources_.lighting.set_line_lights(data_.line_lights);
     const double time_s = request.time_s ? *request.time_s : double(world.tick()) * sim::kTickSeconds;
     return {world, camera_, resources_, output, time_s, poses, data_};
 }

@@ -1,7 +1,8 @@
 #pragma once
-// The frame: the frame data gathered once, then the passes of PassList.cpp it holds, in
-// the table's order, over shared scene resources, each in a debug group and timed. The
-// only place passes are run: the game, the replays, the render stage and the benches.
+// The frame: the frame data gathered once (and its line lights uploaded), then the
+// passes of PassList.cpp it holds, in the table's order, over shared render resources,
+// each in a debug group and timed. The only place passes are run: the game, the
+// replays, the render stage and the benches.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -34,6 +35,7 @@ struct FrameRequest {
     std::optional<Camera> camera;        // instead of the poses' camera at the output's aspect
     std::optional<WeatherLook> weather;  // instead of the world's
     std::optional<SkyState> sky;         // instead of the sky under the weather
+    std::optional<EnergyView> energy;    // instead of the world's shots (their glow and line lights)
 };
 
 class Renderer {
@@ -65,7 +67,7 @@ public:
     static constexpr float kMinRenderScale = 0.25f;
 
     const SceneTargets& targets() const { return resources_.targets; }
-    SceneResources& resources() { return resources_; }
+    RenderResources& resources() { return resources_; }
     const FrameData& frame_data() const { return data_; }  // the last frame's
     // Whether the frame draws world normals into targets() (SceneTargets::write_normals):
     // off unless a capture reads them.
@@ -78,7 +80,7 @@ public:
     gl::TimingMode timing() const { return timer_->mode(); }
 
 private:
-    SceneResources resources_;
+    RenderResources resources_;
     FrameData data_;  // gathered once a frame, before the passes
     Camera camera_;   // the frame's
     std::vector<std::unique_ptr<Pass>> passes_;
@@ -87,6 +89,7 @@ private:
     ParamRegistry params_;
     glm::vec3 sun_dir_;
     ShadowFraming shadow_framing_;
+    BeamLighting beam_lighting_;
     glm::mat4 sky_occlusion_view_proj_;  // the props stay put
     Quality quality_ = Quality::High;
     float render_scale_ = 1.0f;

@@ -12,7 +12,6 @@ using game::StageOptions;
 inline const StagePasses kEnvironmentPass = StagePasses::of({"environment"});
 inline const StagePasses kShadowPass = StagePasses::of({"shadow"});
 inline const StagePasses kSkyOcclusionPass = StagePasses::of({"sky occlusion"});
-inline const StagePasses kEnergyLightPass = StagePasses::of({"energy_lights"});
 inline const StagePasses kOpaquePass = StagePasses::of({"opaque"});
 inline const StagePasses kDustPass = StagePasses::of({"dust"});
 inline const StagePasses kSceneCopyPass = StagePasses::of({"scene_copy"});
@@ -42,4 +41,9 @@ public:
         return ldr();
     }
     game::ImageRGBA8 render(const sim::CameraView& view, const StageFrame& f = {}) { return render(camera(view), f); }
+    game::ImageRGBA8 render_as_game(const StageFrame& f = {}) {
+        game::RenderStage::draw_as_game(f);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        return ldr();
+    }
 };

@@ -63,7 +63,7 @@ struct ScreenBox {
     double centre_x = 0.0;
 };
 ScreenBox glass_on_screen(RenderStage& stage, const effects::Camera& camera, const game::ImageRGBA8& img) {
-    const std::optional<effects::MirrorPass::Glass> g = effects::MirrorPass::find_glass(stage.scene().desc);
+    const std::optional<effects::MirrorPass::Glass> g = effects::MirrorPass::find_glass(stage.resources().desc);
     EXPECT_TRUE(g.has_value());
     const glm::mat4 to_clip = camera.view_proj * stage.world().get<sim::Car>().pose().matrix();
     ScreenBox box{img.width, img.height, 0, 0, 0.0};

@@ -19,7 +19,6 @@
 
 #include "HeadlessTest.h"
 #include "RenderStage.h"
-#include "effects/energy/EnergyLightPass.h"
 #include "SimTestLevel.h"
 #include "effects/energy/EnergyPass.h"
 #include "effects/energy/EnergyProbe.h"
@@ -373,12 +372,13 @@ LineLightGain line_light_gain(const game::ImageRGBA32F& dark, const game::ImageR
     return g;
 }
 
-// The beams as line lights: a shot in the world becomes one line light, and the lit
-// opaque scene (the ground under it) brightens near the beam and nowhere far from it.
+// The beams as line lights: a shot in the world becomes one line light of the frame's
+// data, and the lit opaque scene (the ground under it) brightens near the beam and
+// nowhere far from it.
 TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     constexpr int W = 160, H = 100;
     RenderStage stage(make_test_level(),
-                      {.width = W, .height = H, .passes = kLitScene | kEnergyLightPass, .shadow_map_size = 512});
+                      {.width = W, .height = H, .passes = kLitScene, .shadow_map_size = 512});
     effects::SkyState dusk = stage.sky();
     dusk.sun_radiance = glm::vec3(0.3f);  // the beam's light shows
     stage.set_sky(dusk);
@@ -387,7 +387,6 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     view.eye = {-20.0f, 14.0f, -30.0f};
     view.target = {-20.0f, 1.0f, -14.0f};
     const effects::Camera cam = stage.camera(view);
-    effects::EnergyLightPass& lights = stage.pass<effects::EnergyLightPass>();
     auto render = [&]() {
         stage.draw(cam);
         return stage.hdr();
@@ -398,10 +397,8 @@ TEST_F(EnergyRenderTest, ShotLightsTheGroundAroundIt) {
     weapon.fire({-28.0f, 3.0f, -14.0f}, {1.0f, 0.0f, 0.0f});
     for (int t = 0; t < 12; ++t) world.step({});
     ASSERT_EQ(weapon.shots().size(), 1u);
-    effects::EnergyView energy;
-    effects::gather_energy_view(world, energy);
-    ASSERT_EQ(lights.lights(energy).size(), 1u);
     const game::ImageRGBA32F lit = render();
+    ASSERT_EQ(stage.renderer().frame_data().line_lights.size(), 1u);
 
     // Under the beam (the middle of the image) against the corners, far from it.
     const auto [near_gain, far_gain] = line_light_gain(dark, lit);
@@ -417,7 +414,7 @@ TEST_F(EnergyRenderTest, ShotLightsTheWaterUnderIt) {
     // No wave grid in the world: the water pass draws a flat sea at 0.
     RenderStage stage(make_test_level(), {.width = W,
                                           .height = H,
-                                          .passes = kLitScene | kEnergyLightPass | kSceneCopyPass | kWaterPass,
+                                          .passes = kLitScene | kSceneCopyPass | kWaterPass,
                                           .shadow_map_size = 512});
     effects::SkyState dusk = stage.sky();
     dusk.sun_radiance = glm::vec3(0.3f);  // the beam's light shows
@@ -461,7 +458,7 @@ TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
     constexpr int W = 160, H = 96;
     // The energy pass alone over cleared targets, drawing the test's beam.
     RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = kEnergyPass, .shadow_map_size = 512});
-    const GLuint scene = stage.scene().targets.scene().id();
+    const GLuint scene = stage.resources().targets.hdr().id();
     const effects::Camera cam = look({0, 20, 0}, {0, 20, -1}, W, H);  // level, at the sky
     const std::vector<EnergySegment> beam = {segment({-3, 20, -15}, {1, 0, 0}, 6.0f, 0.12f, 1.1f)};
     effects::EnergyPass& energy = stage.pass<effects::EnergyPass>();
@@ -513,8 +510,8 @@ TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
         pass.draw_field(cam, depth, W, H, beam, true);
         return game::read_framebuffer_rgba32f(fbo.id(), GL_COLOR_ATTACHMENT0, W, H);
     };
-    const game::ImageRGBA32F seabed = energy_over(stage.scene().targets.depth_copy());
-    const game::ImageRGBA32F surface = energy_over(stage.scene().targets.depth());
+    const game::ImageRGBA32F seabed = energy_over(stage.resources().targets.depth_copy());
+    const game::ImageRGBA32F surface = energy_over(stage.resources().targets.depth());
     // Rows top-down: the head (y = 3) above the horizon of the view, the foot under water.
     auto column_sum = [&](const game::ImageRGBA32F& img, int y0, int y1) {
         double sum = 0.0;

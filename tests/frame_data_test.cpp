@@ -121,6 +121,13 @@ TEST(FrameData, GatherFillsTheWeatherTheSkyTheMatricesAndTheShots) {
     EXPECT_FALSE(shots.segments.empty());
     EXPECT_EQ(data.energy.segments.size(), shots.segments.size());
     EXPECT_EQ(data.energy.lights.size(), 1u);
+    // The shot as one line light from its tail to its head, as bright as it is strong.
+    ASSERT_EQ(data.line_lights.size(), 1u);
+    const effects::BeamLighting beam_lighting;
+    EXPECT_EQ(data.line_lights[0].start, shots.lights[0].tail);
+    EXPECT_EQ(data.line_lights[0].end, shots.lights[0].head);
+    EXPECT_EQ(data.line_lights[0].reach_m, beam_lighting.reach_m);
+    EXPECT_EQ(data.line_lights[0].intensity, beam_lighting.intensity_per_strength * shots.lights[0].strength);
     EXPECT_EQ(data.weather, effects::weather_look(world));
     EXPECT_EQ(data.sky, effects::sky_under(data.weather, kSun));
     EXPECT_EQ(data.sun_shadow_view_proj,
@@ -140,6 +147,23 @@ TEST(FrameData, GatherFillsTheWeatherTheSkyTheMatricesAndTheShots) {
     EXPECT_EQ(data.sky, low_sun);
     EXPECT_EQ(data.sun_shadow_view_proj,
               effects::sun_shadow_view_proj(camera, low_sun.sun_dir, world.level().land_height_m, 512, {}));
+    // A caller's shots (none here) replace the world's, and their lights go with them.
+    effects::gather_frame_data(
+        world, {.camera = camera, .sun_dir = kSun, .shadow_map_size = 512, .energy = effects::EnergyView{}}, data);
+    EXPECT_TRUE(data.energy.segments.empty());
+    EXPECT_TRUE(data.line_lights.empty());
+}
+
+TEST(FrameData, NoMoreBeamsLightTheSceneThanTheShadersHold) {
+    effects::EnergyView view;
+    for (int i = 0; i < int(effects::kMaxLineLights) + 4; ++i)
+        view.lights.push_back({glm::vec3(float(i), 1.0f, 0.0f), glm::vec3(float(i), 1.0f, 5.0f), 1.0f});
+    std::vector<effects::LineLight> lights(3);  // left from another frame: replaced
+    effects::beam_line_lights(view, {.intensity_per_strength = 10.0f, .reach_m = 4.0f}, lights);
+    ASSERT_EQ(lights.size(), effects::kMaxLineLights);
+    EXPECT_EQ(lights.back().start, view.lights[effects::kMaxLineLights - 1].tail);
+    EXPECT_EQ(lights.back().reach_m, 4.0f);
+    EXPECT_EQ(lights.back().intensity, 10.0f);
 }
 
 class FrameDataRenderTest : public HeadlessTest {};

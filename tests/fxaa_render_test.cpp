@@ -40,8 +40,8 @@ protected:
                 px[0] = px[1] = px[2] = v;
                 px[3] = 1.0f;
             }
-        glTextureSubImage2D(stage.scene().targets.colour().id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, hdr.data());
-        stage.scene().quality.antialias = antialias;
+        glTextureSubImage2D(stage.resources().targets.colour().id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, hdr.data());
+        stage.resources().quality.antialias = antialias;
         const game::ImageRGBA8 image = stage.render(sim::CameraView{});
         std::vector<float> red(size_t(W * H));
         for (int y = 0; y < H; ++y)

@@ -15,15 +15,12 @@
 
 #include "HeadlessTest.h"
 #include "RenderStage.h"
-#include "effects/Renderer.h"
 #include "effects/rain/DropHeightMap.h"
 #include "effects/rain/MetaballReference.h"
 #include "effects/rain/RainPass.h"
 #include "effects/rain/ReferenceHeightMap.h"
 #include "effects/rain/SurfaceReadback.h"
-#include "game/capture/FrameCapture.h"
 #include "game/capture/ImageFiles.h"
-#include "game/session/GameSession.h"
 #include "sim/player/CameraRig.h"
 #include "sim/rain/RainSim.h"
 #include "sim/vehicle/Car.h"
@@ -37,12 +34,6 @@ void maybe_write(const game::ImageRGBA8& img, const char* name) {
         std::filesystem::create_directories(dir);
         game::write_png(std::filesystem::path(dir) / name, img);
     }
-}
-
-effects::RainPass* rain_pass(const effects::Renderer& r) {
-    for (const auto& p : r.passes())
-        if (auto* rain = dynamic_cast<effects::RainPass*>(p.get())) return rain;
-    return nullptr;
 }
 
 class RainRenderTest : public HeadlessTest {};
@@ -215,16 +206,18 @@ TEST_F(RainRenderTest, TheGpuReferenceMatchesTheCpuReference) {
     }
 }
 
-// The harbour car parked in the driver's view, `taps` presses of rain_up, for `ticks`.
-std::unique_ptr<game::GameSession> parked_in_rain(int rain_taps, int ticks, bool driver = true) {
-    auto s = std::make_unique<game::GameSession>(game::GameSession::open("harbour", 1));
+// The harbour car parked in the driver's view, `taps` presses of rain_up, for `ticks`,
+// on a stage holding every pass.
+std::unique_ptr<RenderStage> parked_in_rain(int rain_taps, int ticks, bool driver = true) {
+    auto stage = std::make_unique<RenderStage>(
+        "harbour", StageOptions{.width = kWidth, .height = kHeight, .environment_size = 64});
     for (int t = 0; t < ticks; ++t) {
         sim::TickInput in;
         in.set(sim::Control::Camera, driver && t == 0);
         in.set(sim::Control::RainUp, t >= 2 && t < 2 + 2 * rain_taps && t % 2 == 0);
-        s->world->step(in);
+        stage->world().step(in);
     }
-    return s;
+    return stage;
 }
 
 float luminance(const game::ImageRGBA8& img, size_t k) {
@@ -235,29 +228,24 @@ float luminance(const game::ImageRGBA8& img, size_t k) {
 TEST_F(RainRenderTest, DriversViewInTheRainShowsDropsOnTheGlassOnly) {
     // Long enough for the weather's shower to set in (it follows the keys with a lag).
     auto dry = parked_in_rain(0, 400), wet = parked_in_rain(4, 400);
-    ASSERT_GT(wet->world->get<sim::RainSim>().drops().size(), 100u);
-    effects::Renderer dry_r(dry->level.scene, *dry->world), wet_r(wet->level.scene, *wet->world);
-    game::FrameCapture a(kWidth, kHeight), b(kWidth, kHeight);
-    dry_r.render(*dry->world, a.output());
-    EXPECT_FALSE(rain_pass(dry_r)->drew_last_frame());  // dry glass, parked wipers: nothing to do
+    ASSERT_GT(wet->world().get<sim::RainSim>().drops().size(), 100u);
+    dry->render_as_game();
+    EXPECT_FALSE(dry->pass<effects::RainPass>().drew_last_frame());  // dry glass, parked wipers: nothing to do
     // The same rainy world with the pass switched off, then on.
-    effects::RainPass* pass = rain_pass(wet_r);
-    pass->look().enabled = false;
-    wet_r.render(*wet->world, a.output());
-    EXPECT_FALSE(pass->drew_last_frame());
-    pass->look().enabled = true;
-    wet_r.render(*wet->world, b.output());
-    EXPECT_TRUE(pass->drew_last_frame());
-    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-    const game::ImageRGBA8 img_dry = a.read(), img_wet = b.read();
+    effects::RainPass& pass = wet->pass<effects::RainPass>();
+    pass.look().enabled = false;
+    const game::ImageRGBA8 img_dry = wet->render_as_game();
+    EXPECT_FALSE(pass.drew_last_frame());
+    pass.look().enabled = true;
+    const game::ImageRGBA8 img_wet = wet->render_as_game();
+    EXPECT_TRUE(pass.drew_last_frame());
     maybe_write(img_dry, "driver_dry.png");
     maybe_write(img_wet, "driver_rain.png");
 
     // Where the windshield is on screen: project its glass.
-    const sim::RainSim& rain = wet->world->get<sim::RainSim>();
-    const effects::Camera cam =
-        effects::make_camera(wet->world->get<sim::CameraRig>().view(), float(kWidth) / float(kHeight));
-    const glm::mat4 car = wet->world->get<sim::Car>().pose().matrix();
+    const sim::RainSim& rain = wet->world().get<sim::RainSim>();
+    const effects::Camera cam = wet->camera(wet->world().get<sim::CameraRig>().view());
+    const glm::mat4 car = wet->world().get<sim::Car>().pose().matrix();
     int top_row = kHeight;  // the highest image row the glass reaches
     for (float u = 0.0f; u <= 1.0f; u += 0.1f) {
         glm::vec4 c = cam.view_proj * car * glm::vec4(rain.glass().point({u * rain.glass().width_m(), rain.glass().height_m()}), 1.0f);
@@ -320,7 +308,7 @@ protected:
     // The scene: `top` above image row `split`, `bottom` from it down; alpha 0, so the
     // pass's coverage is what the alpha holds afterwards; depth far.
     void paint(glm::vec3 top, glm::vec3 bottom, int split) {
-        const GLuint fbo = stage_->scene().targets.scene().id();
+        const GLuint fbo = stage_->resources().targets.hdr().id();
         const float far = 1.0f;
         glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
         glEnable(GL_SCISSOR_TEST);
@@ -475,12 +463,10 @@ TEST_F(RainLookTest, ShadingOnlyTheWetCellsChangesNoPixel) {
 }
 
 TEST_F(RainRenderTest, TheChaseViewDoesNotDrawTheRain) {
-    auto s = parked_in_rain(4, 120, false);
-    ASSERT_GT(s->world->get<sim::RainSim>().drops().size(), 50u);
-    effects::Renderer r(s->level.scene, *s->world);
-    game::FrameCapture out(kWidth, kHeight);
-    r.render(*s->world, out.output());
-    EXPECT_FALSE(rain_pass(r)->drew_last_frame());
+    auto stage = parked_in_rain(4, 120, false);
+    ASSERT_GT(stage->world().get<sim::RainSim>().drops().size(), 50u);
+    stage->render_as_game();
+    EXPECT_FALSE(stage->pass<effects::RainPass>().drew_last_frame());
 }
 
 }  // namespace

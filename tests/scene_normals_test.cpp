@@ -23,7 +23,7 @@ class SceneNormalsTest : public HeadlessTest {};
 TEST_F(SceneNormalsTest, DrawnOnlyWhenAskedAndThePictureIsTheSameEitherWay) {
     RenderStage stage("harbour", {.width = W, .height = H, .passes = kLitScene | kTonemapPass});
     const sim::CameraView view = effects::capture_poses(stage.world()).camera;  // the chase camera: car, road, sky
-    effects::SceneTargets& targets = stage.scene().targets;
+    effects::SceneTargets& targets = stage.resources().targets;
     level_files::TempDir dir("scene_normals");
 
     ASSERT_FALSE(targets.writes_normals()) << "off unless asked";
@@ -37,7 +37,7 @@ TEST_F(SceneNormalsTest, DrawnOnlyWhenAskedAndThePictureIsTheSameEitherWay) {
     const game::ImageRGBA32F with = stage.hdr();
     EXPECT_EQ(with.pixels, without.pixels) << "the normals change nothing in the picture";
 
-    const game::ImageRGBA32F normals = game::read_framebuffer_rgba32f(targets.scene().id(), GL_COLOR_ATTACHMENT1, W, H);
+    const game::ImageRGBA32F normals = game::read_framebuffer_rgba32f(targets.hdr().id(), GL_COLOR_ATTACHMENT1, W, H);
     const std::vector<float> depth = stage.depth();
     int drawn = 0, sky = 0, bad = 0;
     for (size_t i = 0; i < size_t(W * H); ++i) {

@@ -43,10 +43,10 @@ float luma(const float* rgb) { return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.07
 
 ShadowedAndOpen render_both(RenderStage& stage, const sim::CameraView& view) {
     ShadowedAndOpen r;
-    stage.scene().targets.write_normals(true);  // read below; off unless asked
+    stage.resources().targets.write_normals(true);  // read below; off unless asked
     r.image = stage.render(view);
     const game::ImageRGBA32F shadowed = stage.hdr();
-    const auto normals = game::read_framebuffer_rgba32f(stage.scene().targets.scene().id(), GL_COLOR_ATTACHMENT1, W, H);
+    const auto normals = game::read_framebuffer_rgba32f(stage.resources().targets.hdr().id(), GL_COLOR_ATTACHMENT1, W, H);
     const std::vector<float> depth = stage.depth();
     const effects::Camera camera = stage.camera(view);
     for (int y = 0; y < H; ++y)
@@ -61,7 +61,7 @@ ShadowedAndOpen render_both(RenderStage& stage, const sim::CameraView& view) {
     open.replacement = [&](const effects::FrameContext& frame) {
         stage.pass<effects::ShadowPass>().render(frame);
         const float far = 1.0f;
-        glClearTexImage(stage.scene().lighting.shadow_map.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
+        glClearTexImage(stage.resources().lighting.shadow_map.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
     };
     stage.render(view, open);
     const game::ImageRGBA32F unshadowed = stage.hdr();
@@ -147,7 +147,7 @@ TEST_F(ShadowRenderTest, TheCarsShadowStartsAtTheCarAndNothingElseIsDark) {
     RenderStage stage("harbour", {.width = W, .height = H, .passes = kLitScene | kTonemapPass});
     const sim::Pose car = effects::capture_poses(stage.world()).car;
     const glm::vec3 sun = stage.sky().sun_dir;
-    const effects::Model& model = stage.scene().desc.models[size_t(stage.scene().desc.car_model)];
+    const effects::Model& model = stage.resources().desc.models[size_t(stage.resources().desc.car_model)];
     const glm::vec3 lo = model.bounds_min, hi = model.bounds_max, size = hi - lo;
     // The body's core: all but the rounded ends and sides of its length and width, from
     // just above the wheels' bottom third to below the roof.

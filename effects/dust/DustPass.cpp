@@ -65,12 +65,12 @@ const FibreTexture& DustPass::fibres_for(sim::DustKind kind, const FibreDirectio
 void DustPass::render(const FrameContext& frame) {
     const sim::DustField* field = frame.world.find<sim::DustField>();
     if (!field || field->surface().props().empty()) return;
-    geometry_.update(*field, frame.world.level().dust, frame.scene.desc);
+    geometry_.update(*field, frame.world.level().dust, frame.resources.desc);
     if (geometry_.dusty_triangles() == 0) return;
 
-    const SceneTargets& t = frame.scene.targets;
+    const SceneTargets& t = frame.resources.targets;
     const Camera& cam = frame.camera;
-    glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
+    glBindFramebuffer(GL_FRAMEBUFFER, t.hdr().id());
     glViewport(0, 0, t.width(), t.height());
     // Shells hug the surface where the dust is thin: an offset keeps them in front of it.
     gl::PipelineScope state({.depth_test = true,
@@ -84,7 +84,7 @@ void DustPass::render(const FrameContext& frame) {
     std::vector<bool> visible(props.size());
     std::vector<float> distance(props.size());
     std::vector<const DustDrawRange*> range(props.size());
-    frame.scene.lighting.apply(light_, frame.data);
+    frame.resources.lighting.apply(light_, frame.data);
     light_.set("u_eye", cam.eye);
     light_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, geometry_.vertices().id());
@@ -116,9 +116,9 @@ void DustPass::render(const FrameContext& frame) {
         const sim::DustPropRange& prop = props[i];
         const DustDrawRange& r = *range[i];
         const DustLook look = dust_look(prop.kind);
-        const FibreTexture& fibres = fibres_for(prop.kind, frame.scene.desc.fibre_directions);
+        const FibreTexture& fibres = fibres_for(prop.kind, frame.resources.desc.fibre_directions);
         fibres.bind(kFibreUnit, kLuminanceUnit);
-        const int shells = std::min(shells_at(distance[i]), frame.scene.quality.dust_max_shells);
+        const int shells = std::min(shells_at(distance[i]), frame.resources.quality.dust_max_shells);
         for (const gl::Program* p : {&shell_, &fin_}) {
             p->set("u_height_m", look.height_m);
             p->set("u_tile_m", look.tile_m);

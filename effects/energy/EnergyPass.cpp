@@ -61,24 +61,24 @@ void EnergyPass::render(const FrameContext& frame) {
 
 void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {
     if (segments.empty()) return;
-    const SceneTargets& t = frame.scene.targets;
-    if (t.colour().id() != colour_id_) {
+    const SceneTargets& t = frame.resources.targets;
+    if (generation_ != t.generation()) {
         // Colour only: the pass samples the scene depth, so it is not attached.
         fbo_ = gl::Framebuffer::create("energy");
         fbo_.attach_colour(0, t.colour());
         fbo_.check_complete();
-        colour_id_ = t.colour().id();
+        generation_ = t.generation();
     }
     fbo_.bind();
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state({.blend = gl::kAdd});
     draw_field(frame.camera, t.depth(), t.width(), t.height(), segments, false);
     gl::apply(gl::kFullScreen);
-    if (look_.bloom > 0.0f && frame.scene.quality.bloom) bloom(frame, segments);
+    if (look_.bloom > 0.0f && frame.resources.quality.bloom) bloom(frame, segments);
 }
 
 void EnergyPass::bloom(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {
-    const SceneTargets& t = frame.scene.targets;
+    const SceneTargets& t = frame.resources.targets;
     const int w = std::max(1, t.width() / 4), h = std::max(1, t.height() / 4);
     if (bloom_a_.width() != w || bloom_a_.height() != h) {
         bloom_a_ = gl::Texture::create_2d("energy.bloom_a", GL_RGBA16F, w, h);

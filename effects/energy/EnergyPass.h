@@ -62,7 +62,7 @@ private:
     gl::Framebuffer bloom_fbo_a_, bloom_fbo_b_;
     gl::Buffer segments_, tile_list_, tile_segments_;
     gl::Framebuffer fbo_;
-    GLuint colour_id_ = 0;  // the scene colour fbo_ holds
+    uint64_t generation_ = 0;  // SceneTargets::generation() fbo_ was built for
     EnergyTileGrid tiles_;
     EnergyLook look_;
     EnergyMethod method_;

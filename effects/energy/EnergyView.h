@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "effects/scene/LineLight.h"
 #include "sim/weapon/EnergySegment.h"
 #include "sim/world/World.h"
 
@@ -22,5 +23,16 @@ struct EnergyView {
 
 // Fills `view` from the world's weapon (empty without one). Reuses its storage.
 void gather_energy_view(const sim::World& world, EnergyView& view);
+
+// How brightly and how far the beams light what is near them (the debug panel's
+// "energy" group; docs/effects/energy.md).
+struct BeamLighting {
+    float intensity_per_strength = 60.0f;  // line-light intensity per unit of segment strength
+    float reach_m = 9.0f;
+};
+
+// The line lights the beams in `view` make, one per shot from its tail to its head: the
+// first kMaxLineLights (the shaders light with no more). Reuses `lights`' storage.
+void beam_line_lights(const EnergyView& view, const BeamLighting& lighting, std::vector<LineLight>& lights);
 
 }  // namespace effects

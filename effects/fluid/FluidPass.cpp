@@ -200,7 +200,7 @@ const gl::Texture* FluidPass::smooth(const gl::Texture& source, gl::Texture* pin
     p->set("u_viewport", glm::vec2(float(width_), float(height_)));
     p->set("u_depth", int(kMapUnit));
     // A preset may narrow the kernel: close to the tank its cost is per pixel of the screen.
-    const int kernel = std::min(smoothing_.kernel_size, frame.scene.quality.fluid_kernel_max | 1);
+    const int kernel = std::min(smoothing_.kernel_size, frame.resources.quality.fluid_kernel_max | 1);
     p->set("u_half", (kernel - 1) / 2);
     p->set("u_sigma", look_.plane_sigma_radii * radius);
     p->set("u_max_move", look_.plane_max_move_radii * radius);
@@ -209,7 +209,7 @@ const gl::Texture* FluidPass::smooth(const gl::Texture& source, gl::Texture* pin
     p->set("u_sigma_depth", 2.0f * std::sqrt(2.0f) * radius);
     p->set("u_band", look_.narrow_band_radii * radius);
     const gl::Texture* in = &source;
-    const int iterations = std::min(smoothing_.iterations, frame.scene.quality.fluid_smoothing_max);
+    const int iterations = std::min(smoothing_.iterations, frame.resources.quality.fluid_smoothing_max);
     for (int it = 0; it < iterations; ++it) {
         gl::Texture* out = &ping_pong[it % 2];
         smooth_fbo_.attach_colour(0, *out);
@@ -242,7 +242,7 @@ void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
     splash_thickness_.set("u_viewport", low_size);
     splash_thickness_.set("u_soft_pixels", look_.splash_soft_pixels);
     splash_thickness_.set("u_scale", s);
-    frame.scene.targets.depth().bind(kSceneDepthUnit);
+    frame.resources.targets.depth().bind(kSceneDepthUnit);
     splash_thickness_.set("u_scene_depth", int(kSceneDepthUnit));
     smoothed_front_->bind(kMapUnit);
     splash_thickness_.set("u_body_front", int(kMapUnit));
@@ -269,7 +269,7 @@ void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
 }
 
 void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
-    SceneTargets& t = frame.scene.targets;
+    SceneTargets& t = frame.resources.targets;
     const Camera& cam = frame.camera;
     resize_targets(t.width(), t.height());
     rect_ = screen_rect(frame, view, (FluidSmoothing::kMaxKernel - 1) / 2 + 2);

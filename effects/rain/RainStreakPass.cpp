@@ -34,13 +34,13 @@ void RainStreakPass::render(const FrameContext& frame) {
     const WeatherLook& weather = frame.data.weather;
     drawn_ = look_.enabled ? int(std::lround(float(look_.drops_at_full_rain) * std::clamp(weather.rain_rate, 0.0f, 1.0f))) : 0;
     if (drawn_ <= 0) return;
-    const SceneTargets& t = frame.scene.targets;
-    if (t.colour().id() != colour_id_) {
+    const SceneTargets& t = frame.resources.targets;
+    if (generation_ != t.generation()) {
         fbo_ = gl::Framebuffer::create("rain_streaks");
         fbo_.attach_colour(0, t.colour());
         fbo_.attach_depth(t.depth());
         fbo_.check_complete();
-        colour_id_ = t.colour().id();
+        generation_ = t.generation();
     }
     fbo_.bind();
     glViewport(0, 0, t.width(), t.height());

@@ -35,7 +35,7 @@ public:
 private:
     gl::Program program_;
     gl::Framebuffer fbo_;
-    GLuint colour_id_ = 0;
+    uint64_t generation_ = 0;  // SceneTargets::generation() fbo_ was built for
     RainStreakLook look_;
     int drawn_ = 0;
 };

@@ -11,7 +11,7 @@
 namespace effects {
 
 // What the renderer shares between its passes for the life of a level.
-struct SceneResources {
+struct RenderResources {
     const SceneDesc& desc;
     SceneGeometry geometry;
     SceneLighting lighting;
@@ -29,7 +29,7 @@ struct RenderOutput {
 struct FrameContext {
     const sim::World& world;
     const Camera& camera;
-    SceneResources& scene;
+    RenderResources& resources;
     RenderOutput output;
     double time_s = 0.0;  // sim time: frames of a replay are the same every run
     FramePoses poses;     // where the moving things are drawn (the camera is made from its view)

@@ -58,7 +58,9 @@ void gather_frame_data(const sim::World& world, const FrameSetting& setting, Fra
     data.sun_shadow_view_proj = sun_shadow_view_proj(setting.camera, data.sky.sun_dir, world.level().land_height_m,
                                                      setting.shadow_map_size, setting.shadow_framing);
     data.sky_occlusion_view_proj = setting.sky_occlusion_view_proj;
-    gather_energy_view(world, data.energy);
+    if (setting.energy) data.energy = *setting.energy;
+    else gather_energy_view(world, data.energy);
+    beam_line_lights(data.energy, setting.beam_lighting, data.line_lights);
 }
 
 }  // namespace effects

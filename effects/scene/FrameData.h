@@ -1,9 +1,10 @@
 #pragma once
 // What the frame works out once, before the passes run, for every pass that needs it:
 // the weather's look, the sky under it, where the sun's shadow map and the sky-occlusion
-// map look from, and the shots in flight. The passes receive it read-only through
-// FrameContext::data; the functions that make it need no GL.
+// map look from, the shots in flight and the line lights they make. The passes receive
+// it read-only through FrameContext::data; the functions that make it need no GL.
 #include <optional>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -53,7 +54,8 @@ struct FrameData {
     SkyState sky;                               // under that weather
     glm::mat4 sun_shadow_view_proj{1.0f};       // the shadow map's (ShadowPass draws it)
     glm::mat4 sky_occlusion_view_proj{1.0f};    // the sky-occlusion map's (SkyOcclusionPass)
-    EnergyView energy;                          // the shots in flight: the energy lights and glow
+    EnergyView energy;                          // the shots in flight: the energy glow
+    std::vector<LineLight> line_lights;         // theirs (at most kMaxLineLights): every lit surface's
 };
 
 // What the frame's data is made from besides the world.
@@ -63,8 +65,10 @@ struct FrameSetting {
     int shadow_map_size;    // texels a side
     ShadowFraming shadow_framing;
     glm::mat4 sky_occlusion_view_proj{1.0f};  // fixed for a level (the props stay put)
+    BeamLighting beam_lighting{};             // the shots' line lights
     std::optional<WeatherLook> weather;       // instead of the world's
     std::optional<SkyState> sky;              // instead of the sky under the weather
+    std::optional<EnergyView> energy;         // instead of the world's shots
 };
 
 // Fills `data` from the world. Reuses its storage.

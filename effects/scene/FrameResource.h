@@ -10,11 +10,11 @@ enum class FrameResource {
     // Frame data, made once before the passes (Renderer::render).
     Sky,    // the weather's look, the sky under it, the shadow maps' views (FrameData but the shots)
     Shots,  // the energy shots in flight, gathered from the world once (FrameData::energy)
+    LineLights,  // the shots as lights (FrameData::line_lights), in SceneLighting's line-light block
     // Made by passes.
     EnvironmentCube,  // SceneLighting::env_cube
     ShadowMap,        // SceneLighting::shadow_map, drawn from FrameData::sun_shadow_view_proj
     SkyOcclusion,     // SceneLighting::sky_map, drawn from FrameData::sky_occlusion_view_proj
-    LineLights,       // SceneLighting's line-light block
     SceneColour,      // SceneTargets::colour()
     Normals,          // SceneTargets::normal()
     Depth,            // SceneTargets::depth()
@@ -24,7 +24,9 @@ enum class FrameResource {
 };
 
 // Made before the passes run, so no pass may write it.
-constexpr bool is_frame_data(FrameResource r) { return r == FrameResource::Sky || r == FrameResource::Shots; }
+constexpr bool is_frame_data(FrameResource r) {
+    return r == FrameResource::Sky || r == FrameResource::Shots || r == FrameResource::LineLights;
+}
 
 // A copy another pass may refresh (PassDeclaration's Refresh): what it is copied from
 // again. Only the scene copy's colour is refreshed.
@@ -37,10 +39,10 @@ constexpr std::string_view name_of(FrameResource r) {
     switch (r) {
         case FrameResource::Sky: return "sky";
         case FrameResource::Shots: return "shots";
+        case FrameResource::LineLights: return "line lights";
         case FrameResource::EnvironmentCube: return "environment cube";
         case FrameResource::ShadowMap: return "shadow map";
         case FrameResource::SkyOcclusion: return "sky occlusion";
-        case FrameResource::LineLights: return "line lights";
         case FrameResource::SceneColour: return "scene colour";
         case FrameResource::Normals: return "normals";
         case FrameResource::Depth: return "depth";

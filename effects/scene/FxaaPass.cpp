@@ -15,8 +15,8 @@ void FxaaPass::register_params(ParamRegistry& params) {
 }
 
 void FxaaPass::render(const FrameContext& frame) {
-    if (!frame.scene.quality.antialias) return;
-    SceneTargets& t = frame.scene.targets;
+    if (!frame.resources.quality.antialias) return;
+    SceneTargets& t = frame.resources.targets;
     if (t.width() == frame.output.width && t.height() == frame.output.height)
         glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
     else

@@ -15,15 +15,15 @@ LitScene::Programs LitScene::programs(const FrameContext& frame, const QualitySe
                                       bool normals, const Camera& camera) {
     if (!ground_)
         ground_.emplace(label_ + ".ground", std::vector<std::string_view>{"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"},
-                        std::vector<std::string>{"GROUND", "ROAD_COUNT " + std::to_string(frame.scene.geometry.ground_road_count())});
+                        std::vector<std::string>{"GROUND", "ROAD_COUNT " + std::to_string(frame.resources.geometry.ground_road_count())});
     const gl::Program& objects = objects_.get(quality, line_lights, normals);
     const gl::Program& ground = ground_->get(quality, line_lights, normals);
     for (const gl::Program* p : {&objects, &ground}) {
-        frame.scene.lighting.apply(*p, frame.data);
+        frame.resources.lighting.apply(*p, frame.data);
         p->set("u_view_proj", camera.view_proj);
         p->set("u_eye", camera.eye);
     }
-    frame.scene.geometry.apply_ground(ground);
+    frame.resources.geometry.apply_ground(ground);
     ground.set("u_wetness", frame.data.weather.road_wetness);
     return {objects, ground};
 }

@@ -60,16 +60,16 @@ std::optional<MirrorPass::Glass> MirrorPass::find_glass(const SceneDesc& desc) {
 
 void MirrorPass::render(const FrameContext& frame) {
     drawn_ = false;
-    const int width = frame.scene.quality.mirror_width;
+    const int width = frame.resources.quality.mirror_width;
     if (width <= 0) return;
     const auto* player = frame.world.find<sim::Player>();
     if (!player || player->vehicle() != sim::Vehicle::Car || player->view() != sim::ViewMode::Driver) return;
     if (!looked_up_) {
         looked_up_ = true;
-        glass_ = find_glass(frame.scene.desc);
+        glass_ = find_glass(frame.resources.desc);
         if (glass_) {
             Model m;
-            for (const MeshData& mesh : frame.scene.desc.models[size_t(frame.scene.desc.car_model)].meshes)
+            for (const MeshData& mesh : frame.resources.desc.models[size_t(frame.resources.desc.car_model)].meshes)
                 if (mesh.name == "mirror_glass") m.meshes.push_back(mesh);
             glass_model_ = std::make_unique<GpuModel>(m);
         }
@@ -129,21 +129,21 @@ void MirrorPass::draw_behind(const FrameContext& frame, const View& v) {
 
     // Shaded as the low preset shades, one shadow tap and no reflections, and without the
     // energy beams' light: the picture is small and seen in passing.
-    QualitySettings cheap = frame.scene.quality;
+    QualitySettings cheap = frame.resources.quality;
     cheap.soft_shadows = false;
     cheap.env_reflection = false;
     cheap.ground_detail = false;
     const LitScene::Programs p = scene_.programs(frame, cheap, false, false, v.camera);
     // The car is left out: the mirror looks out of it, through where its rear window is.
     const Frustum behind(v.camera.view_proj);
-    frame.scene.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, behind, {},
+    frame.resources.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, behind, {},
                               SceneGeometry::Car::LeftOut);
 
     p.objects.use();
     p.objects.set("u_model", glm::mat4(1.0f));
     p.objects.set("u_normal_matrix", glm::mat3(1.0f));
     p.objects.set("u_tint", kSeaTint);
-    frame.scene.geometry.sea().draw(p.objects, false);
+    frame.resources.geometry.sea().draw(p.objects, false);
     p.objects.set("u_tint", glm::vec4(1.0f));
 
     scene_.draw_sky(frame.data, v.camera, false);
@@ -152,8 +152,8 @@ void MirrorPass::draw_behind(const FrameContext& frame, const View& v) {
 void MirrorPass::draw_glass(const FrameContext& frame, const View& v) {
     // The glass again, over itself as the opaque pass drew it: only its own pixels, and
     // only their colour (the opaque pass wrote their normals, when drawn).
-    SceneTargets& t = frame.scene.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
+    SceneTargets& t = frame.resources.targets;
+    glBindFramebuffer(GL_FRAMEBUFFER, t.hdr().id());
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state({.depth_test = true, .depth_func = GL_LEQUAL, .offset_factor = -1.0f, .offset_units = -1.0f});
     if (t.writes_normals()) glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);

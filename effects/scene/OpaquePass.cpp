@@ -7,8 +7,8 @@ namespace effects {
 OpaquePass::OpaquePass() : scene_("opaque") {}
 
 void OpaquePass::render(const FrameContext& frame) {
-    SceneTargets& t = frame.scene.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, t.scene().id());
+    SceneTargets& t = frame.resources.targets;
+    glBindFramebuffer(GL_FRAMEBUFFER, t.hdr().id());
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state({.depth_test = true, .depth_write = true, .cull_back_faces = true});
     const bool normals = t.writes_normals();
@@ -17,20 +17,20 @@ void OpaquePass::render(const FrameContext& frame) {
     if (normals) glClearBufferfv(GL_COLOR, 1, clear_normal);
     glClear(GL_DEPTH_BUFFER_BIT);
 
-    const SceneLighting& lighting = frame.scene.lighting;
-    const bool line_lights = lighting.has_line_lights();
+    const std::vector<LineLight>& lights = frame.data.line_lights;
+    const bool line_lights = !lights.empty();
     const Frustum view(frame.camera.view_proj);
     // With beams flying, what they reach is drawn with the line-light sum and the rest
     // without it: the sum is a lit pixel's costliest loop, and a beam lights a few
     // metres around it.
     for (const bool lit : {true, false}) {
         if (lit && !line_lights) continue;
-        const LitScene::Programs p = scene_.programs(frame, frame.scene.quality, lit, normals, frame.camera);
+        const LitScene::Programs p = scene_.programs(frame, frame.resources.quality, lit, normals, frame.camera);
         SceneGeometry::Select select;
         if (line_lights)
-            select = [&lighting, lit](glm::vec3 lo, glm::vec3 hi) { return lighting.line_lights_reach(lo, hi) == lit; };
-        frame.scene.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, view, select,
-                                  SceneGeometry::Car::Drawn, frame.camera.eye);
+            select = [&lights, lit](glm::vec3 lo, glm::vec3 hi) { return line_lights_reach(lights, lo, hi) == lit; };
+        frame.resources.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, view, select,
+                                      SceneGeometry::Car::Drawn, frame.camera.eye);
     }
 
     // Sky last, only where nothing was drawn.

@@ -3,7 +3,6 @@
 // sky-occlusion map and the line lights. Every lit pass binds them, with the frame's sky
 // and matrices (FrameData), through apply().
 #include <span>
-#include <vector>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -12,20 +11,9 @@
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 #include "effects/scene/FrameData.h"
+#include "effects/scene/LineLight.h"
 
 namespace effects {
-
-// A light along a segment (an energy beam): shaders/common/lighting.glsl's LineLights.
-struct LineLight {
-    glm::vec3 start{0.0f}, end{0.0f};
-    float reach_m = 0.0f;
-    float intensity = 0.0f;  // per metre of the segment
-    glm::vec3 colour{1.0f};
-};
-
-// Whether `light` can reach into the box [lo, hi]: conservative (true may be out of
-// reach, false never is), for drawing what no beam lights without the line-light sum.
-bool line_light_reaches(const LineLight& light, glm::vec3 lo, glm::vec3 hi);
 
 class SceneLighting {
 public:
@@ -33,7 +21,6 @@ public:
     static constexpr GLuint kShadowUnit = 15;
     static constexpr GLuint kSkyUnit = 13;
     static constexpr GLuint kLineLightBinding = 3;
-    static constexpr size_t kMaxLineLights = 16;  // as lighting.glsl's kMaxLineLights
 
     SceneLighting(int env_size, int shadow_size, int sky_size = 1024);
 
@@ -56,17 +43,13 @@ public:
     static glm::vec3 cabin_daylight(const SkyState& sky);
     // A new shadow map of `size` texels on a side (nothing drawn in it yet).
     void resize_shadow_map(int size);
-    // The line lights of the frame (none unless set; beyond kMaxLineLights ignored).
+    // Uploads the frame's line lights (FrameData::line_lights; beyond kMaxLineLights
+    // ignored) for apply() to bind: the renderer does, once a frame before the passes.
     void set_line_lights(std::span<const LineLight> lights);
-    bool has_line_lights() const { return line_light_count_ > 0; }
-    // Whether any of the frame's line lights reaches into the box [lo, hi].
-    bool line_lights_reach(glm::vec3 lo, glm::vec3 hi) const;
 
 private:
     int env_levels_;
-    std::vector<LineLight> line_light_list_;  // the first line_light_count_ of the frame's
     gl::Buffer line_lights_;
-    int line_light_count_ = 0;
 };
 
 }  // namespace effects

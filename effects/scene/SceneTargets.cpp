@@ -19,12 +19,12 @@ void SceneTargets::resize(int width, int height) {
         t->set_wrap(GL_CLAMP_TO_EDGE);
     }
     depth_copy_.set_filter(GL_NEAREST, GL_NEAREST);
-    scene_fbo_ = gl::Framebuffer::create("scene");
-    scene_fbo_.attach_colour(0, colour_);
-    scene_fbo_.attach_colour(1, normal_);
-    scene_fbo_.attach_depth(depth_);
-    set_scene_draw_buffers();
-    scene_fbo_.check_complete();
+    hdr_fbo_ = gl::Framebuffer::create("scene");
+    hdr_fbo_.attach_colour(0, colour_);
+    hdr_fbo_.attach_colour(1, normal_);
+    hdr_fbo_.attach_depth(depth_);
+    set_hdr_draw_buffers();
+    hdr_fbo_.check_complete();
     copy_fbo_ = gl::Framebuffer::create("scene.copy");
     copy_fbo_.attach_colour(0, colour_copy_);
     copy_fbo_.attach_depth(depth_copy_);
@@ -38,14 +38,14 @@ void SceneTargets::resize(int width, int height) {
 
 void SceneTargets::write_normals(bool on) {
     writes_normals_ = on;
-    if (scene_fbo_.id() != 0) set_scene_draw_buffers();
+    if (hdr_fbo_.id() != 0) set_hdr_draw_buffers();
 }
 
-void SceneTargets::set_scene_draw_buffers() {
+void SceneTargets::set_hdr_draw_buffers() {
     if (writes_normals_)
-        scene_fbo_.set_draw_buffers({0, 1});
+        hdr_fbo_.set_draw_buffers({0, 1});
     else
-        scene_fbo_.set_draw_buffers({0});
+        hdr_fbo_.set_draw_buffers({0});
 }
 
 const gl::Framebuffer& SceneTargets::display_fbo() {
@@ -73,10 +73,10 @@ const gl::Framebuffer& SceneTargets::antialiased_fbo() {
 }
 
 void SceneTargets::copy_scene() {
-    glNamedFramebufferReadBuffer(scene_fbo_.id(), GL_COLOR_ATTACHMENT0);
-    glBlitNamedFramebuffer(scene_fbo_.id(), copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
+    glNamedFramebufferReadBuffer(hdr_fbo_.id(), GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(hdr_fbo_.id(), copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBlitNamedFramebuffer(scene_fbo_.id(), copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
+    glBlitNamedFramebuffer(hdr_fbo_.id(), copy_fbo_.id(), 0, 0, width_, height_, 0, 0, width_, height_,
                            GL_DEPTH_BUFFER_BIT, GL_NEAREST);
 }
 

@@ -27,15 +27,16 @@ public:
     // them is rebuilt when the generation it was built for differs (a size can come back,
     // and a texture name can be reused, while the pass was not drawing).
     uint64_t generation() const { return generation_; }
-    // Whether the scene's framebuffer draws world normals (its second draw buffer): only
-    // an EXR capture reads them, so they are left out unless asked for (off at first).
+    // Whether the HDR framebuffer draws world normals (its second draw buffer): only an
+    // EXR capture reads them, so they are left out unless asked for (off at first).
     // The passes drawing into it compile their normals output in or out to match.
     void write_normals(bool on);
     bool writes_normals() const { return writes_normals_; }
 
     int width() const { return width_; }
     int height() const { return height_; }
-    const gl::Framebuffer& scene() const { return scene_fbo_; }
+    // The 3D scene's HDR framebuffer: colour (0), normals (1), depth.
+    const gl::Framebuffer& hdr() const { return hdr_fbo_; }
     const gl::Texture& colour() const { return colour_; }
     const gl::Texture& normal() const { return normal_; }
     const gl::Texture& depth() const { return depth_; }
@@ -52,13 +53,13 @@ public:
     const gl::Texture& antialiased() const { return antialiased_; }
 
 private:
-    void set_scene_draw_buffers();
+    void set_hdr_draw_buffers();
 
     int width_ = 0, height_ = 0;
     uint64_t generation_ = 0;
     bool writes_normals_ = false;
     gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_, display_, antialiased_;
-    gl::Framebuffer scene_fbo_, copy_fbo_, display_fbo_, antialiased_fbo_;
+    gl::Framebuffer hdr_fbo_, copy_fbo_, display_fbo_, antialiased_fbo_;
 };
 
 }  // namespace effects

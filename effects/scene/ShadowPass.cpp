@@ -9,9 +9,9 @@ ShadowPass::ShadowPass()
       fbo_(gl::Framebuffer::create("shadow")) {}
 
 void ShadowPass::render(const FrameContext& frame) {
-    SceneLighting& lighting = frame.scene.lighting;
-    if (lighting.shadow_map.width() != frame.scene.quality.shadow_map_size) {
-        lighting.resize_shadow_map(frame.scene.quality.shadow_map_size);
+    SceneLighting& lighting = frame.resources.lighting;
+    if (lighting.shadow_map.width() != frame.resources.quality.shadow_map_size) {
+        lighting.resize_shadow_map(frame.resources.quality.shadow_map_size);
         fbo_initialised_ = false;
     }
     const int size = lighting.shadow_map.width();
@@ -44,13 +44,13 @@ void ShadowPass::render(const FrameContext& frame) {
     if (still_view_proj_ != view_proj) {
         glBindFramebuffer(GL_FRAMEBUFFER, still_fbo_.id());
         glClear(GL_DEPTH_BUFFER_BIT);
-        frame.scene.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::StillShadowCasters, sun_view);
+        frame.resources.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::StillShadowCasters, sun_view);
         still_view_proj_ = view_proj;
     }
     glCopyImageSubData(still_map_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, lighting.shadow_map.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        size, size, 1);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    frame.scene.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::MovingShadowCasters, sun_view);
+    frame.resources.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::MovingShadowCasters, sun_view);
 }
 
 }  // namespace effects

@@ -14,7 +14,7 @@ void UpscalePass::register_params(ParamRegistry& params) {
 }
 
 void UpscalePass::render(const FrameContext& frame) {
-    const SceneTargets& t = frame.scene.targets;
+    const SceneTargets& t = frame.resources.targets;
     if (t.width() == frame.output.width && t.height() == frame.output.height) return;
     glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
     glViewport(0, 0, frame.output.width, frame.output.height);
@@ -23,7 +23,7 @@ void UpscalePass::render(const FrameContext& frame) {
     program_.set("u_display", 0);
     program_.set("u_edge", edge_);
     program_.set("u_sharpness", sharpness_);
-    (frame.scene.quality.antialias ? t.antialiased() : t.display()).bind(0);
+    (frame.resources.quality.antialias ? t.antialiased() : t.display()).bind(0);
     gl::bind_empty_vertex_array();
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -27,19 +27,18 @@ void SprayRenderer::draw(const FrameContext& frame, std::span<const SprayDrop> d
 
     const Camera& cam = frame.camera;
     const glm::mat4 inv_view = glm::inverse(cam.view);
-    const SceneTargets& t = frame.scene.targets;
-    if (t.colour().id() != colour_id_ || t.depth().id() != depth_id_) {
+    const SceneTargets& t = frame.resources.targets;
+    if (generation_ != t.generation()) {
         fbo_ = gl::Framebuffer::create("water.spray");
         fbo_.attach_colour(0, t.colour());
         fbo_.attach_depth(t.depth());
         fbo_.check_complete();
-        colour_id_ = t.colour().id();
-        depth_id_ = t.depth().id();
+        generation_ = t.generation();
     }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, t.width(), t.height());
     program_.use();
-    frame.scene.lighting.apply(program_, frame.data);
+    frame.resources.lighting.apply(program_, frame.data);
     program_.set("u_view_proj", cam.view_proj);
     program_.set("u_eye", cam.eye);
     program_.set("u_cam_right", glm::vec3(inv_view[0]));

@@ -32,7 +32,7 @@ private:
     gl::Buffer instances_;
     gl::VertexArray vao_;
     gl::Framebuffer fbo_;  // scene colour and depth, re-made when the scene's targets are
-    GLuint colour_id_ = 0, depth_id_ = 0;
+    uint64_t generation_ = 0;  // SceneTargets::generation() fbo_ was built for
 };
 
 }  // namespace effects

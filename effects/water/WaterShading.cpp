@@ -28,9 +28,7 @@ void WaterShading::select_programs(const QualitySettings& quality, bool line_lig
 }
 
 void WaterShading::follow_targets(const SceneTargets& t) {
-    if (t.colour().id() == colour_id_ && t.normal().id() == normal_id_ && t.depth().id() == depth_id_ &&
-        kind_.width() == t.width() && kind_.height() == t.height())
-        return;
+    if (generation_ == t.generation()) return;
     kind_ = gl::Texture::create_2d("water.kind", GL_RGBA8, t.width(), t.height());
     kind_.set_filter(GL_NEAREST, GL_NEAREST);
     kind_.set_wrap(GL_CLAMP_TO_EDGE);
@@ -51,9 +49,7 @@ void WaterShading::follow_targets(const SceneTargets& t) {
     shade_fbo_.attach_depth(mask_depth_);
     shade_fbo_.set_draw_buffers({0});
     shade_fbo_.check_complete();
-    colour_id_ = t.colour().id();
-    normal_id_ = t.normal().id();
-    depth_id_ = t.depth().id();
+    generation_ = t.generation();
 }
 
 void WaterShading::begin_sea(const SceneTargets& t) {

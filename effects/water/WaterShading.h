@@ -53,7 +53,7 @@ private:
     gl::Program sea_mask_, sea_and_sheet_mask_;  // the latter reads the kind target
     gl::Texture kind_, mask_depth_;
     gl::Framebuffer sea_fbo_, sheet_fbo_, shade_fbo_;
-    GLuint colour_id_ = 0, normal_id_ = 0, depth_id_ = 0;  // the scene textures the framebuffers hold
+    uint64_t generation_ = 0;  // SceneTargets::generation() the framebuffers were built for
 };
 
 }  // namespace effects

@@ -14,11 +14,9 @@
 #include "effects/rain/RainPass.h"
 #include "effects/rain/ReferenceHeightMap.h"
 #include "effects/rain/SurfaceReadback.h"
-#include "effects/Renderer.h"
 #include "game/bench/BenchSupport.h"
-#include "game/capture/FrameCapture.h"
 #include "game/level/LevelLoader.h"
-#include "game/session/GameSession.h"
+#include "game/stage/RenderStage.h"
 #include "sim/rain/RainSim.h"
 
 namespace game {
@@ -197,27 +195,27 @@ void bench_reference(BenchReport& report, int runs) {
 // The whole rain pass in the driver's view of the harbour car, parked in heavy rain
 // with the wipers on low: height map, scene copy with mips, windshield.
 void bench_pass(BenchReport& report, int width, int height, int frames) {
-    GameSession s = GameSession::open("harbour", 1);
+    RenderStage stage("harbour", {.width = width, .height = height, .environment_size = 64});
+    stage.renderer().set_timing(effects::gl::TimingMode::Profile);
+    sim::World& world = stage.world();
     for (uint32_t t = 0; t < 300; ++t) {
         sim::TickInput in;
         in.set(sim::Control::Camera, t == 0);
         in.set(sim::Control::RainUp, t == 2 || t == 4 || t == 6 || t == 8);
         in.set(sim::Control::Wipers, t == 100 || t == 102);
-        s.world->step(in);
+        world.step(in);
     }
-    effects::Renderer renderer(s.level.scene, *s.world, {.timing = effects::gl::TimingMode::Profile});
-    FrameCapture capture(width, height);
-    renderer.render(*s.world, capture.output());
+    stage.draw_as_game();
     double ms = 0.0;
     for (int f = 0; f < frames; ++f) {
-        s.world->step({});
-        renderer.render(*s.world, capture.output());
-        for (const auto& p : renderer.pass_times())
+        world.step({});
+        stage.draw_as_game();
+        for (const auto& p : stage.renderer().pass_times())
             if (p.name == "rain") ms += p.ms;
     }
     report.add({"rain", "rain pass in the driver's view @" + std::to_string(width) + "x" + std::to_string(height),
                 ms / frames, "ms", std::nullopt, false,
-                std::to_string(s.world->get<sim::RainSim>().drops().size()) + " drops; profile mode"});
+                std::to_string(world.get<sim::RainSim>().drops().size()) + " drops; profile mode"});
 }
 
 }  // namespace

@@ -24,9 +24,9 @@ void FrameCapture::write_scene_exr(const std::filesystem::path& path, const effe
         throw CaptureError("cannot write " + path.string() +
                            ": the scene's normals are not drawn (Renderer::write_normals(true) before rendering)");
     const int w = t.width(), h = t.height();
-    ImageRGBA32F colour = read_framebuffer_rgba32f(t.scene().id(), GL_COLOR_ATTACHMENT0, w, h);
-    ImageRGBA32F normal = read_framebuffer_rgba32f(t.scene().id(), GL_COLOR_ATTACHMENT1, w, h);
-    std::vector<float> depth = read_depth(t.scene().id(), w, h);
+    ImageRGBA32F colour = read_framebuffer_rgba32f(t.hdr().id(), GL_COLOR_ATTACHMENT0, w, h);
+    ImageRGBA32F normal = read_framebuffer_rgba32f(t.hdr().id(), GL_COLOR_ATTACHMENT1, w, h);
+    std::vector<float> depth = read_depth(t.hdr().id(), w, h);
     // Window depth to eye distance along the view axis, for a perspective projection.
     for (float& d : depth) {
         float ndc = d * 2.0f - 1.0f;

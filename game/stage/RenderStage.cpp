@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "game/capture/Readback.h"
+#include "sim/player/CameraRig.h"
 
 namespace game {
 
@@ -52,6 +53,12 @@ void RenderStage::draw(const effects::Camera& camera, const StageFrame& f) {
     renderer_.render(world(), output_.output(), effects::capture_poses(world()), request(camera, f));
 }
 
+void RenderStage::draw_as_game(StageFrame f) {
+    const sim::World& w = world();
+    if (!f.time_s) f.time_s = double(w.tick()) * sim::kTickSeconds;
+    draw(camera(w.get<sim::CameraRig>().view()), f);
+}
+
 effects::SkyState RenderStage::sky() const {
     if (sky_) return *sky_;
     const sim::World& w = *session_.world;
@@ -59,9 +66,9 @@ effects::SkyState RenderStage::sky() const {
 }
 
 ImageRGBA32F RenderStage::hdr() const {
-    return read_framebuffer_rgba32f(renderer_.targets().scene().id(), GL_COLOR_ATTACHMENT0, width_, height_);
+    return read_framebuffer_rgba32f(renderer_.targets().hdr().id(), GL_COLOR_ATTACHMENT0, width_, height_);
 }
 
-std::vector<float> RenderStage::depth() const { return read_depth(renderer_.targets().scene().id(), width_, height_); }
+std::vector<float> RenderStage::depth() const { return read_depth(renderer_.targets().hdr().id(), width_, height_); }
 
 }  // namespace game

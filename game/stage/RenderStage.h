@@ -46,6 +46,9 @@ public:
 
     // Runs the held passes, less the frame's skipped ones, through the renderer.
     void draw(const effects::Camera& camera, const StageFrame& f = {});
+    // The same as the game draws it: from the world's camera, at the world's time unless
+    // the frame says otherwise.
+    void draw_as_game(StageFrame f = {});
 
     // The weather every frame is drawn under, instead of the world's (none: the world's).
     void set_weather(std::optional<effects::WeatherLook> weather) { weather_ = weather; }
@@ -67,7 +70,7 @@ public:
         throw std::logic_error("the stage does not hold that pass");
     }
     sim::World& world() { return *session_.world; }
-    effects::SceneResources& scene() { return renderer_.resources(); }
+    effects::RenderResources& resources() { return renderer_.resources(); }
     effects::Renderer& renderer() { return renderer_; }
     const FrameCapture& output() const { return output_; }
 
