@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -128,6 +129,29 @@ TEST(ParticleFluid, SameStateForOneAndTwoThreads) {
     EXPECT_EQ(run(1), run(2));
 }
 
+// A block of 1500 particles struck by a sphere for 30 ticks beside a raised box: the
+// splash whose hashes and ellipsoids the tests below pin.
+static sim::ParticleFluidParams splash_params() {
+    sim::ParticleFluidParams p;
+    p.box_size_m = {0.8f, 0.8f, 0.8f};
+    p.ceiling_m = 1.6f;
+    p.particle_radius_m = 0.025f;
+    return p;
+}
+
+static std::unique_ptr<sim::ParticleFluid> recorded_splash(sim::JobPool& jobs) {
+    const sim::ParticleFluidParams p = splash_params();
+    auto splash = std::make_unique<sim::ParticleFluid>(p);
+    splash->set_boxes({{{0.5f, 0.0f, 0.0f}, {0.8f, 0.15f, 0.8f}}});
+    splash->add_particles(sim::fill_block({0, 0, 0}, {0.5f, 0.8f, 0.8f}, p.particle_radius_m, 1500, 3));
+    sim::FluidSphere s{{0.25f, 0.7f, 0.4f}, {0.5f, -6.0f, 0.0f}, 0.1f};
+    for (int t = 0; t < 30; ++t) {
+        s.centre += s.velocity * kDt;
+        splash->step(kDt, {1.0f, -9.81f, 0.0f}, {s}, jobs);
+    }
+    return splash;
+}
+
 // The step's results pinned bit for bit, as a replay pins the world's: a sphere thrown
 // through a block standing by a box, and a block packed at half the rest spacing, whose
 // particles have more neighbours than a list keeps (164 at most). Recorded before the
@@ -137,18 +161,9 @@ TEST(ParticleFluid, SplashAndOverpackedBlockKeepTheirRecordedHashes) {
     for (int threads = 1; threads <= 3; ++threads) {
         SCOPED_TRACE("threads " + std::to_string(threads));
         sim::JobPool jobs(threads);
-        sim::ParticleFluidParams p;
-        p.box_size_m = {0.8f, 0.8f, 0.8f};
-        p.ceiling_m = 1.6f;
-        p.particle_radius_m = 0.025f;
-        sim::ParticleFluid splash(p);
-        splash.set_boxes({{{0.5f, 0.0f, 0.0f}, {0.8f, 0.15f, 0.8f}}});
-        splash.add_particles(sim::fill_block({0, 0, 0}, {0.5f, 0.8f, 0.8f}, p.particle_radius_m, 1500, 3));
-        sim::FluidSphere s{{0.25f, 0.7f, 0.4f}, {0.5f, -6.0f, 0.0f}, 0.1f};
-        for (int t = 0; t < 30; ++t) {
-            s.centre += s.velocity * kDt;
-            splash.step(kDt, {1.0f, -9.81f, 0.0f}, {s}, jobs);
-        }
+        const sim::ParticleFluidParams p = splash_params();
+        std::unique_ptr<sim::ParticleFluid> fluid = recorded_splash(jobs);
+        sim::ParticleFluid& splash = *fluid;
         EXPECT_EQ(splash.hash(), 0xa936b314c330271aull);
 
         sim::ParticleFluid packed(p);
@@ -247,18 +262,9 @@ TEST(AnisotropicKernels, TheSameOnAPoolOfThreads) {
 // grid cell were summed four at a time, one in each SIMD element; with 1 and 3 threads.
 TEST(AnisotropicKernels, KeepTheirRecordedBits) {
     sim::JobPool one(1);
-    sim::ParticleFluidParams p;
-    p.box_size_m = {0.8f, 0.8f, 0.8f};
-    p.ceiling_m = 1.6f;
-    p.particle_radius_m = 0.025f;
-    sim::ParticleFluid splash(p);
-    splash.set_boxes({{{0.5f, 0.0f, 0.0f}, {0.8f, 0.15f, 0.8f}}});
-    splash.add_particles(sim::fill_block({0, 0, 0}, {0.5f, 0.8f, 0.8f}, p.particle_radius_m, 1500, 3));
-    sim::FluidSphere s{{0.25f, 0.7f, 0.4f}, {0.5f, -6.0f, 0.0f}, 0.1f};
-    for (int t = 0; t < 30; ++t) {
-        s.centre += s.velocity * kDt;
-        splash.step(kDt, {1.0f, -9.81f, 0.0f}, {s}, one);
-    }
+    const sim::ParticleFluidParams p = splash_params();
+    std::unique_ptr<sim::ParticleFluid> fluid = recorded_splash(one);
+    sim::ParticleFluid& splash = *fluid;
     sim::AnisotropyParams a;
     a.particle_radius_m = p.particle_radius_m;
     a.neighbourhood_m = 8.0f * p.particle_radius_m;
