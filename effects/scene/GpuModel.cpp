@@ -71,12 +71,23 @@ glm::vec3 GpuModel::part_centre(std::string_view mesh) const {
 }
 
 std::vector<size_t> GpuModel::part_order(const std::optional<glm::vec3>& eye) const {
-    std::vector<size_t> order(ranges_.size());
+    std::vector<PartBox> boxes;
+    boxes.reserve(ranges_.size());
+    for (const Range& r : ranges_) boxes.push_back({r.lo, r.hi});
+    if (!eye) {
+        std::vector<size_t> order(boxes.size());
+        std::iota(order.begin(), order.end(), size_t(0));
+        return order;
+    }
+    return nearest_first(boxes, *eye);
+}
+
+std::vector<size_t> nearest_first(const std::vector<PartBox>& boxes, glm::vec3 eye) {
+    std::vector<size_t> order(boxes.size());
     std::iota(order.begin(), order.end(), size_t(0));
-    if (!eye) return order;
-    std::vector<float> key(ranges_.size());
-    for (size_t i = 0; i < ranges_.size(); ++i) {
-        const float d = glm::distance(*eye, glm::clamp(*eye, ranges_[i].lo, ranges_[i].hi));
+    std::vector<float> key(boxes.size());
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        const float d = glm::distance(eye, glm::clamp(eye, boxes[i].lo, boxes[i].hi));
         key[i] = d > 0.0f ? d : std::numeric_limits<float>::infinity();
     }
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key[a] < key[b]; });

@@ -66,6 +66,15 @@ private:
     std::vector<Range> ranges_;
 };
 
+// A part's bounding box, in its model's space.
+struct PartBox {
+    glm::vec3 lo, hi;
+};
+// The order to draw parts in so the early depth test spares what is hidden: nearest the
+// eye first; the boxes that hold the eye (a body seen from inside) last, everything inside
+// them being in front of them; equals in the model's order.
+std::vector<size_t> nearest_first(const std::vector<PartBox>& boxes, glm::vec3 eye);
+
 // A unit sphere (radius 1) for thrown objects.
 Model make_sphere_model(int rings, int segments);
 // The cube [-1, 1]^3 with a flat normal per face.
