@@ -10,9 +10,8 @@
 namespace effects {
 
 Renderer::Renderer(const SceneDesc& scene, const sim::World& world, RendererOptions options)
-    : resources_{scene, SceneGeometry(scene, world.terrain()),
-                 SceneLighting(options.environment_size, options.quality.shadow_map_size), SceneTargets{},
-                 options.quality},
+    : resources_{scene, SceneGeometry(scene, world.terrain()), options.quality},
+      lighting_(options.environment_size, options.quality.shadow_map_size),
       passes_(make_passes(options.passes)),
       timer_(std::make_unique<gl::PassTimer>(options.timing)),
       sun_dir_(glm::normalize(world.level().sun_direction)),
@@ -44,8 +43,8 @@ void Renderer::set_render_scale(float scale) {
 void Renderer::size_scene(int output_width, int output_height) {
     const int width = std::max(1, int(std::lround(float(output_width) * render_scale_)));
     const int height = std::max(1, int(std::lround(float(output_height) * render_scale_)));
-    if (width != resources_.targets.width() || height != resources_.targets.height()) {
-        resources_.targets.resize(width, height);
+    if (width != targets_.width() || height != targets_.height()) {
+        targets_.resize(width, height);
         for (auto& p : passes_) p->resize(width, height);
     }
 }
@@ -66,9 +65,9 @@ FrameContext Renderer::prepare(const sim::World& world, RenderOutput output, con
                        .energy = request.energy},
                       data_);
     // Once, for every lit pass to bind (SceneLighting::apply).
-    resources_.lighting.set_line_lights(data_.line_lights);
+    lighting_.set_line_lights(data_.line_lights);
     const double time_s = request.time_s ? *request.time_s : double(world.tick()) * sim::kTickSeconds;
-    return {world, camera_, resources_, output, time_s, poses, data_};
+    return {world, camera_, resources_, lighting_, targets_, output, time_s, poses, data_};
 }
 
 void Renderer::render(const sim::World& world, RenderOutput output) { render(world, output, capture_poses(world)); }

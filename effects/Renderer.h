@@ -66,12 +66,15 @@ public:
     bool antialiasing() const { return resources_.quality.antialias; }
     static constexpr float kMinRenderScale = 0.25f;
 
-    const SceneTargets& targets() const { return resources_.targets; }
+    const SceneTargets& targets() const { return targets_; }
+    SceneTargets& targets() { return targets_; }
+    SceneLighting& lighting() { return lighting_; }
+    // Between frames only: during one, passes read the resources through FrameContext.
     RenderResources& resources() { return resources_; }
     const FrameData& frame_data() const { return data_; }  // the last frame's
     // Whether the frame draws world normals into targets() (SceneTargets::write_normals):
     // off unless a capture reads them.
-    void write_normals(bool on) { resources_.targets.write_normals(on); }
+    void write_normals(bool on) { targets_.write_normals(on); }
     ParamRegistry& params() { return params_; }
     const std::vector<gl::PassTime>& pass_times() const { return timer_->results(); }
     const std::vector<std::unique_ptr<Pass>>& passes() const { return passes_; }
@@ -81,6 +84,8 @@ public:
 
 private:
     RenderResources resources_;
+    SceneLighting lighting_;  // maps the environment, shadow and sky-occlusion passes draw
+    SceneTargets targets_;
     FrameData data_;  // gathered once a frame, before the passes
     Camera camera_;   // the frame's
     std::vector<std::unique_ptr<Pass>> passes_;

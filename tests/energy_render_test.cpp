@@ -458,7 +458,7 @@ TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
     constexpr int W = 160, H = 96;
     // The energy pass alone over cleared targets, drawing the test's beam.
     RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = kEnergyPass, .shadow_map_size = 512});
-    const GLuint scene = stage.resources().targets.hdr().id();
+    const GLuint scene = stage.targets().hdr().id();
     const effects::Camera cam = look({0, 20, 0}, {0, 20, -1}, W, H);  // level, at the sky
     const std::vector<EnergySegment> beam = {segment({-3, 20, -15}, {1, 0, 0}, 6.0f, 0.12f, 1.1f)};
     effects::EnergyPass& energy = stage.pass<effects::EnergyPass>();
@@ -510,8 +510,8 @@ TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {
         pass.draw_field(cam, depth, W, H, beam, true);
         return game::read_framebuffer_rgba32f(fbo.id(), GL_COLOR_ATTACHMENT0, W, H);
     };
-    const game::ImageRGBA32F seabed = energy_over(stage.resources().targets.depth_copy());
-    const game::ImageRGBA32F surface = energy_over(stage.resources().targets.depth());
+    const game::ImageRGBA32F seabed = energy_over(stage.targets().depth_copy());
+    const game::ImageRGBA32F surface = energy_over(stage.targets().depth());
     // Rows top-down: the head (y = 3) above the horizon of the view, the foot under water.
     auto column_sum = [&](const game::ImageRGBA32F& img, int y0, int y1) {
         double sum = 0.0;

@@ -40,7 +40,7 @@ protected:
                 px[0] = px[1] = px[2] = v;
                 px[3] = 1.0f;
             }
-        glTextureSubImage2D(stage.resources().targets.colour().id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, hdr.data());
+        glTextureSubImage2D(stage.targets().colour().id(), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, hdr.data());
         stage.resources().quality.antialias = antialias;
         const game::ImageRGBA8 image = stage.render(sim::CameraView{});
         std::vector<float> red(size_t(W * H));

@@ -308,7 +308,7 @@ protected:
     // The scene: `top` above image row `split`, `bottom` from it down; alpha 0, so the
     // pass's coverage is what the alpha holds afterwards; depth far.
     void paint(glm::vec3 top, glm::vec3 bottom, int split) {
-        const GLuint fbo = stage_->resources().targets.hdr().id();
+        const GLuint fbo = stage_->targets().hdr().id();
         const float far = 1.0f;
         glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
         glEnable(GL_SCISSOR_TEST);

@@ -23,7 +23,7 @@ class SceneNormalsTest : public HeadlessTest {};
 TEST_F(SceneNormalsTest, DrawnOnlyWhenAskedAndThePictureIsTheSameEitherWay) {
     RenderStage stage("harbour", {.width = W, .height = H, .passes = kLitScene | kTonemapPass});
     const sim::CameraView view = effects::capture_poses(stage.world()).camera;  // the chase camera: car, road, sky
-    effects::SceneTargets& targets = stage.resources().targets;
+    effects::SceneTargets& targets = stage.targets();
     level_files::TempDir dir("scene_normals");
 
     ASSERT_FALSE(targets.writes_normals()) << "off unless asked";

@@ -43,10 +43,10 @@ float luma(const float* rgb) { return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.07
 
 ShadowedAndOpen render_both(RenderStage& stage, const sim::CameraView& view) {
     ShadowedAndOpen r;
-    stage.resources().targets.write_normals(true);  // read below; off unless asked
+    stage.targets().write_normals(true);  // read below; off unless asked
     r.image = stage.render(view);
     const game::ImageRGBA32F shadowed = stage.hdr();
-    const auto normals = game::read_framebuffer_rgba32f(stage.resources().targets.hdr().id(), GL_COLOR_ATTACHMENT1, W, H);
+    const auto normals = game::read_framebuffer_rgba32f(stage.targets().hdr().id(), GL_COLOR_ATTACHMENT1, W, H);
     const std::vector<float> depth = stage.depth();
     const effects::Camera camera = stage.camera(view);
     for (int y = 0; y < H; ++y)
@@ -61,7 +61,7 @@ ShadowedAndOpen render_both(RenderStage& stage, const sim::CameraView& view) {
     open.replacement = [&](const effects::FrameContext& frame) {
         stage.pass<effects::ShadowPass>().render(frame);
         const float far = 1.0f;
-        glClearTexImage(stage.resources().lighting.shadow_map.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
+        glClearTexImage(stage.lighting().shadow_map.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &far);
     };
     stage.render(view, open);
     const game::ImageRGBA32F unshadowed = stage.hdr();

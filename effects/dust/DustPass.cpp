@@ -68,7 +68,7 @@ void DustPass::render(const FrameContext& frame) {
     geometry_.update(*field, frame.world.level().dust, frame.resources.desc);
     if (geometry_.dusty_triangles() == 0) return;
 
-    const SceneTargets& t = frame.resources.targets;
+    const SceneTargets& t = frame.targets;
     const Camera& cam = frame.camera;
     glBindFramebuffer(GL_FRAMEBUFFER, t.hdr().id());
     glViewport(0, 0, t.width(), t.height());
@@ -84,7 +84,7 @@ void DustPass::render(const FrameContext& frame) {
     std::vector<bool> visible(props.size());
     std::vector<float> distance(props.size());
     std::vector<const DustDrawRange*> range(props.size());
-    frame.resources.lighting.apply(light_, frame.data);
+    frame.lighting.apply(light_, frame.data);
     light_.set("u_eye", cam.eye);
     light_.use();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, geometry_.vertices().id());

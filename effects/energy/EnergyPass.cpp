@@ -61,7 +61,7 @@ void EnergyPass::render(const FrameContext& frame) {
 
 void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {
     if (segments.empty()) return;
-    const SceneTargets& t = frame.resources.targets;
+    const SceneTargets& t = frame.targets;
     if (generation_ != t.generation()) {
         // Colour only: the pass samples the scene depth, so it is not attached.
         fbo_ = gl::Framebuffer::create("energy");
@@ -78,7 +78,7 @@ void EnergyPass::draw(const FrameContext& frame, std::span<const sim::EnergySegm
 }
 
 void EnergyPass::bloom(const FrameContext& frame, std::span<const sim::EnergySegment> segments) {
-    const SceneTargets& t = frame.resources.targets;
+    const SceneTargets& t = frame.targets;
     const int w = std::max(1, t.width() / 4), h = std::max(1, t.height() / 4);
     if (bloom_a_.width() != w || bloom_a_.height() != h) {
         bloom_a_ = gl::Texture::create_2d("energy.bloom_a", GL_RGBA16F, w, h);

@@ -242,7 +242,7 @@ void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
     splash_thickness_.set("u_viewport", low_size);
     splash_thickness_.set("u_soft_pixels", look_.splash_soft_pixels);
     splash_thickness_.set("u_scale", s);
-    frame.resources.targets.depth().bind(kSceneDepthUnit);
+    frame.targets.depth().bind(kSceneDepthUnit);
     splash_thickness_.set("u_scene_depth", int(kSceneDepthUnit));
     smoothed_front_->bind(kMapUnit);
     splash_thickness_.set("u_body_front", int(kMapUnit));
@@ -269,7 +269,7 @@ void FluidPass::draw_splash(const FrameContext& frame, const FluidView& view) {
 }
 
 void FluidPass::draw(const FrameContext& frame, const FluidView& view) {
-    SceneTargets& t = frame.resources.targets;
+    SceneTargets& t = frame.targets;
     const Camera& cam = frame.camera;
     resize_targets(t.width(), t.height());
     rect_ = screen_rect(frame, view, (FluidSmoothing::kMaxKernel - 1) / 2 + 2);

@@ -47,7 +47,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     if (!mesh_ || mesh_->glass() != &glass) mesh_ = std::make_unique<WindshieldMesh>(glass);
     // The preset's map size scaled with the scene (the drops need no finer map than the
     // pixels they cover), in steps of 64 texels, at most the size the pass was made with.
-    const float scene_scale = float(frame.resources.targets.width()) / float(std::max(frame.output.width, 1));
+    const float scene_scale = float(frame.targets.width()) / float(std::max(frame.output.width, 1));
     const int scaled = int(std::lround(float(frame.resources.quality.rain_map_width) * std::min(scene_scale, 1.0f) / 64.0f)) * 64;
     const int map_width = std::min(std::max(scaled, 128), made_width_);
     if (height_map_.width() != map_width) height_map_ = DropHeightMap(map_width, map_width * made_height_ / made_width_);
@@ -58,7 +58,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
 
     // What lies behind the glass now (water and all), with mips: the scene copy made
     // again whole.
-    SceneTargets& t = frame.resources.targets;
+    SceneTargets& t = frame.targets;
     if (scene_generation_ != t.generation()) {
         scene_colour_fbo_ = gl::Framebuffer::create("rain.scene_colour");
         scene_colour_fbo_.attach_colour(0, t.colour());

@@ -34,7 +34,7 @@ void RainStreakPass::render(const FrameContext& frame) {
     const WeatherLook& weather = frame.data.weather;
     drawn_ = look_.enabled ? int(std::lround(float(look_.drops_at_full_rain) * std::clamp(weather.rain_rate, 0.0f, 1.0f))) : 0;
     if (drawn_ <= 0) return;
-    const SceneTargets& t = frame.resources.targets;
+    const SceneTargets& t = frame.targets;
     if (generation_ != t.generation()) {
         fbo_ = gl::Framebuffer::create("rain_streaks");
         fbo_.attach_colour(0, t.colour());

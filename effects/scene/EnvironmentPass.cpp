@@ -9,7 +9,7 @@ EnvironmentPass::EnvironmentPass()
       fbo_(gl::Framebuffer::create("environment")) {}
 
 void EnvironmentPass::render(const FrameContext& frame) {
-    SceneLighting& lighting = frame.resources.lighting;
+    SceneLighting& lighting = frame.lighting;
     if (valid_ && filled_ == frame.data.sky) return;
     // Face order +X -X +Y -Y +Z -Z with the GL cube map conventions.
     const glm::vec3 fwd[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};

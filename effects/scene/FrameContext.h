@@ -10,12 +10,11 @@
 
 namespace effects {
 
-// What the renderer shares between its passes for the life of a level.
+// What the renderer shares between its passes for the life of a level. Set up between
+// frames; during one, passes only read it.
 struct RenderResources {
     const SceneDesc& desc;
     SceneGeometry geometry;
-    SceneLighting lighting;
-    SceneTargets targets;
     QualitySettings quality{};  // the renderer's preset; passes follow it frame by frame
 };
 
@@ -25,11 +24,14 @@ struct RenderOutput {
     int width = 0, height = 0;
 };
 
-// One frame: the world to draw (read only), from where, into what.
+// One frame: the world to draw (read only), from where, into what. Passes write only
+// the lighting's maps and the targets; the pass table declares who writes which.
 struct FrameContext {
     const sim::World& world;
     const Camera& camera;
-    RenderResources& resources;
+    const RenderResources& resources;
+    SceneLighting& lighting;
+    SceneTargets& targets;
     RenderOutput output;
     double time_s = 0.0;  // sim time: frames of a replay are the same every run
     FramePoses poses;     // where the moving things are drawn (the camera is made from its view)

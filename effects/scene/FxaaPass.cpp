@@ -16,7 +16,7 @@ void FxaaPass::register_params(ParamRegistry& params) {
 
 void FxaaPass::render(const FrameContext& frame) {
     if (!frame.resources.quality.antialias) return;
-    SceneTargets& t = frame.resources.targets;
+    SceneTargets& t = frame.targets;
     if (t.width() == frame.output.width && t.height() == frame.output.height)
         glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
     else

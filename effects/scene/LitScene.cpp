@@ -19,7 +19,7 @@ LitScene::Programs LitScene::programs(const FrameContext& frame, const QualitySe
     const gl::Program& objects = objects_.get(quality, line_lights, normals);
     const gl::Program& ground = ground_->get(quality, line_lights, normals);
     for (const gl::Program* p : {&objects, &ground}) {
-        frame.resources.lighting.apply(*p, frame.data);
+        frame.lighting.apply(*p, frame.data);
         p->set("u_view_proj", camera.view_proj);
         p->set("u_eye", camera.eye);
     }

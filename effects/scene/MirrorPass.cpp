@@ -152,7 +152,7 @@ void MirrorPass::draw_behind(const FrameContext& frame, const View& v) {
 void MirrorPass::draw_glass(const FrameContext& frame, const View& v) {
     // The glass again, over itself as the opaque pass drew it: only its own pixels, and
     // only their colour (the opaque pass wrote their normals, when drawn).
-    SceneTargets& t = frame.resources.targets;
+    SceneTargets& t = frame.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, t.hdr().id());
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state({.depth_test = true, .depth_func = GL_LEQUAL, .offset_factor = -1.0f, .offset_units = -1.0f});

@@ -7,7 +7,7 @@ namespace effects {
 OpaquePass::OpaquePass() : scene_("opaque") {}
 
 void OpaquePass::render(const FrameContext& frame) {
-    SceneTargets& t = frame.resources.targets;
+    SceneTargets& t = frame.targets;
     glBindFramebuffer(GL_FRAMEBUFFER, t.hdr().id());
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state({.depth_test = true, .depth_write = true, .cull_back_faces = true});

@@ -10,7 +10,7 @@ namespace effects {
 class SceneCopyPass final : public Pass {
 public:
     std::string_view name() const override { return "scene_copy"; }
-    void render(const FrameContext& frame) override { frame.resources.targets.copy_scene(); }
+    void render(const FrameContext& frame) override { frame.targets.copy_scene(); }
 };
 
 }  // namespace effects

@@ -9,7 +9,7 @@ ShadowPass::ShadowPass()
       fbo_(gl::Framebuffer::create("shadow")) {}
 
 void ShadowPass::render(const FrameContext& frame) {
-    SceneLighting& lighting = frame.resources.lighting;
+    SceneLighting& lighting = frame.lighting;
     if (lighting.shadow_map.width() != frame.resources.quality.shadow_map_size) {
         lighting.resize_shadow_map(frame.resources.quality.shadow_map_size);
         fbo_initialised_ = false;

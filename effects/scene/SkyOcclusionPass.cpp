@@ -11,7 +11,7 @@ SkyOcclusionPass::SkyOcclusionPass()
 void SkyOcclusionPass::render(const FrameContext& frame) {
     if (drawn_) return;
     drawn_ = true;
-    SceneLighting& lighting = frame.resources.lighting;
+    SceneLighting& lighting = frame.lighting;
     const SceneGeometry& geometry = frame.resources.geometry;
     const glm::vec3 lo = geometry.props_min(), hi = geometry.props_max();
     if (!(hi.x > lo.x && hi.z > lo.z)) return;  // no props: nothing above anything

@@ -13,7 +13,7 @@ void TonemapPass::register_params(ParamRegistry& params) { params.add("tonemap",
 void TonemapPass::render(const FrameContext& frame) {
     // Into the output at its own size; for a smaller scene or anti-aliasing, into the
     // display image that the anti-aliasing or the upscale pass reads.
-    SceneTargets& t = frame.resources.targets;
+    SceneTargets& t = frame.targets;
     if (t.width() == frame.output.width && t.height() == frame.output.height && !frame.resources.quality.antialias) {
         glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
         glViewport(0, 0, frame.output.width, frame.output.height);

@@ -14,7 +14,7 @@ void UpscalePass::register_params(ParamRegistry& params) {
 }
 
 void UpscalePass::render(const FrameContext& frame) {
-    const SceneTargets& t = frame.resources.targets;
+    const SceneTargets& t = frame.targets;
     if (t.width() == frame.output.width && t.height() == frame.output.height) return;
     glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
     glViewport(0, 0, frame.output.width, frame.output.height);

@@ -27,7 +27,7 @@ void SprayRenderer::draw(const FrameContext& frame, std::span<const SprayDrop> d
 
     const Camera& cam = frame.camera;
     const glm::mat4 inv_view = glm::inverse(cam.view);
-    const SceneTargets& t = frame.resources.targets;
+    const SceneTargets& t = frame.targets;
     if (generation_ != t.generation()) {
         fbo_ = gl::Framebuffer::create("water.spray");
         fbo_.attach_colour(0, t.colour());
@@ -38,7 +38,7 @@ void SprayRenderer::draw(const FrameContext& frame, std::span<const SprayDrop> d
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, t.width(), t.height());
     program_.use();
-    frame.resources.lighting.apply(program_, frame.data);
+    frame.lighting.apply(program_, frame.data);
     program_.set("u_view_proj", cam.view_proj);
     program_.set("u_eye", cam.eye);
     program_.set("u_cam_right", glm::vec3(inv_view[0]));

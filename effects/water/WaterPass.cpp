@@ -49,7 +49,7 @@ glm::ivec4 WaterPass::water_rect(const Camera& cam, const SceneTargets& t, bool 
 
 void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     view.validate();
-    const SceneTargets& t = frame.resources.targets;
+    const SceneTargets& t = frame.targets;
     const Camera& cam = frame.camera;
     const float time_s = float(frame.time_s);
     surface_.update(view);  // its own small pass first: it binds another framebuffer
@@ -80,7 +80,7 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
     // Shading, once per water pixel.
     shading_.select_programs(frame.resources.quality, !frame.data.line_lights.empty());
     for (const gl::Program* p : {&shading_.sea_program(), &shading_.sheet_program()}) {
-        frame.resources.lighting.apply(*p, frame.data);
+        frame.lighting.apply(*p, frame.data);
         p->set("u_inv_view_proj", cam.inv_view_proj);
         p->set("u_eye", cam.eye);
         p->set("u_time_s", time_s);

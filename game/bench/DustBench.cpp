@@ -103,7 +103,7 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
                                   .environment_size = 64});
     const sim::DustField* field = stage.world().find<sim::DustField>();
     if (!field) return;
-    effects::RenderResources& resources = stage.resources();
+    const effects::RenderResources& resources = stage.resources();
     const effects::SceneDesc& desc = resources.desc;
     sim::CameraView view;
     if (where == DustBenchView::Warehouse) {  // inside the door, over the crates, the shelf and the old car
@@ -125,11 +125,11 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
     for (size_t i : props) models.push_back(std::make_unique<effects::GpuModel>(desc.models[size_t(desc.props[i].model)]));
     effects::gl::Program mesh = effects::gl::Program::from_files("bench.mesh", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"});
     auto draw_props = [&] {
-        glBindFramebuffer(GL_FRAMEBUFFER, resources.targets.hdr().id());
+        glBindFramebuffer(GL_FRAMEBUFFER, stage.targets().hdr().id());
         glViewport(0, 0, width, height);
         effects::gl::PipelineScope state({.depth_test = true, .depth_write = true, .cull_back_faces = true});
         mesh.use();
-        resources.lighting.apply(mesh, frame.data);
+        stage.lighting().apply(mesh, frame.data);
         mesh.set("u_view_proj", camera.view_proj);
         mesh.set("u_eye", camera.eye);
         mesh.set("u_surface", 0);
@@ -142,7 +142,7 @@ void bench_dust_render(BenchReport& report, int width, int height, bool quick, D
         }
     };
     auto clear = [&] {
-        glBindFramebuffer(GL_FRAMEBUFFER, resources.targets.hdr().id());
+        glBindFramebuffer(GL_FRAMEBUFFER, stage.targets().hdr().id());
         const float black[4] = {0, 0, 0, 1};
         glClearBufferfv(GL_COLOR, 0, black);
         glClear(GL_DEPTH_BUFFER_BIT);

@@ -228,9 +228,8 @@ void bench_full_screen(BenchReport& report, bool quick) {
     level.id = "energy_bench";
     // The scene's targets only: the bench draws the pass with its own segments.
     RenderStage stage(level, {.width = W, .height = H, .passes = {}, .environment_size = 16, .shadow_map_size = 256});
-    effects::RenderResources& resources = stage.resources();
     const float far = 1.0f;
-    glClearNamedFramebufferfv(resources.targets.hdr().id(), GL_DEPTH, 0, &far);  // sky everywhere
+    glClearNamedFramebufferfv(stage.targets().hdr().id(), GL_DEPTH, 0, &far);  // sky everywhere
     sim::CameraView v;
     v.eye = {0.2f, 0.1f, 0.0f};
     v.target = {0.0f, 0.0f, -10.0f};
@@ -272,7 +271,7 @@ void bench_full_screen(BenchReport& report, bool quick) {
          {GL_FRAGMENT_SHADER, "#version 450 core\nout vec4 o;\nvoid main() { o = vec4(0.01, 0.02, 0.03, 0.0); }\n",
           "fill.frag"}});
     effects::gl::Framebuffer target = effects::gl::Framebuffer::create("energy_bench.fill");
-    target.attach_colour(0, resources.targets.colour());
+    target.attach_colour(0, stage.targets().colour());
     target.check_complete();
     target.bind();
     glViewport(0, 0, W, H);

@@ -43,7 +43,7 @@ struct FluidStage {
                                 .passes = effects::PassSet::of({"fluid"}),
                                 .environment_size = 16,
                                 .shadow_map_size = 256}),
-          resources(stage.resources()),
+          targets(stage.targets()),
           pass(stage.pass<effects::FluidPass>()) {}
 
     static sim::LevelDesc bench_level() {
@@ -62,8 +62,8 @@ struct FluidStage {
 
     void render(const effects::FluidView& view) {
         const float sky[4] = {0.35f, 0.45f, 0.55f, 1.0f}, far = 1.0f;
-        glClearNamedFramebufferfv(resources.targets.hdr().id(), GL_COLOR, 0, sky);
-        glClearNamedFramebufferfv(resources.targets.hdr().id(), GL_DEPTH, 0, &far);
+        glClearNamedFramebufferfv(targets.hdr().id(), GL_COLOR, 0, sky);
+        glClearNamedFramebufferfv(targets.hdr().id(), GL_DEPTH, 0, &far);
         pass.draw(stage.context(camera), view);
     }
 
@@ -83,7 +83,7 @@ struct FluidStage {
 
     int width, height;
     RenderStage stage;
-    effects::RenderResources& resources;
+    effects::SceneTargets& targets;
     effects::FluidPass& pass;
     effects::Camera camera;
 };
@@ -242,7 +242,7 @@ ExitRayQuality measure_exit_rays(int width, int height) {
     stage.pass.set_smoothing(effects::FluidSmoothing::defaults(effects::SmoothingMethod::PlaneFit));
     stage.pass.set_exit_ray_probe(true);
     stage.render(view_of(a.particles(kQualityRadius), kQualityRadius));
-    const std::vector<float> probe = stage.read(stage.resources.targets.colour(), 4);
+    const std::vector<float> probe = stage.read(stage.targets.colour(), 4);
     const float eta = stage.pass.look().ior;
     const glm::vec3 c(stage.camera.view * glm::vec4(a.centre, 1.0f));
     std::vector<double> err;

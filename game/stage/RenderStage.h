@@ -71,6 +71,8 @@ public:
     }
     sim::World& world() { return *session_.world; }
     effects::RenderResources& resources() { return renderer_.resources(); }
+    effects::SceneTargets& targets() { return renderer_.targets(); }
+    effects::SceneLighting& lighting() { return renderer_.lighting(); }
     effects::Renderer& renderer() { return renderer_; }
     const FrameCapture& output() const { return output_; }
 
