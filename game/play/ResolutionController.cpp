@@ -9,7 +9,8 @@ namespace game {
 
 ResolutionController::ResolutionController(const Options& options) : options_(options) {
     if (!(options.min_scale > 0.0f && options.min_scale <= options.max_scale && options.step > 0.0f &&
-          options.budget_ms > 0.0 && options.down_window >= 2 && options.up_frames >= 1))
+          options.budget_ms > 0.0 && options.down_window >= 2 && options.up_frames >= 1 &&
+          options.up_share > 0.0 && options.up_share <= 1.0))
         throw std::invalid_argument("ResolutionController: bad options");
     scale_ = snap(options.start_scale);
 }
@@ -22,26 +23,30 @@ float ResolutionController::snap(float scale) const {
 float ResolutionController::frame(double frame_ms) {
     if (!std::isfinite(frame_ms) || frame_ms < 0.0) return scale_;
     recent_.push_back(frame_ms);
-    if (recent_.size() > options_.down_window) recent_.pop_front();
-    under_run_ = frame_ms < options_.up_fraction * options_.budget_ms ? under_run_ + 1 : 0;
+    if (recent_.size() > std::max(options_.down_window, options_.up_frames)) recent_.pop_front();
 
     float next = scale_;
-    if (recent_.size() == options_.down_window) {
-        // The mean without the worst frame: one hitch (a resize, a page fault) is no trend.
-        const double sum = std::accumulate(recent_.begin(), recent_.end(), 0.0);
-        const double worst = *std::max_element(recent_.begin(), recent_.end());
-        const double typical = (sum - worst) / double(recent_.size() - 1);
+    if (recent_.size() >= options_.down_window) {
+        // The last frames' mean without the worst: one hitch (a resize, a page fault) is no trend.
+        const auto last = recent_.end() - std::ptrdiff_t(options_.down_window);
+        const double sum = std::accumulate(last, recent_.end(), 0.0);
+        const double worst = *std::max_element(last, recent_.end());
+        const double typical = (sum - worst) / double(options_.down_window - 1);
         if (typical > options_.budget_ms) {
             // Aim a little under the budget, and always at least one step down.
             const float aim = scale_ * float(std::sqrt(0.9 * options_.budget_ms / typical));
             next = std::min(snap(aim), snap(scale_ - options_.step));
         }
     }
-    if (next == scale_ && under_run_ >= options_.up_frames) next = snap(scale_ + options_.step);
+    if (next == scale_ && recent_.size() >= options_.up_frames) {
+        const double well_under = options_.up_fraction * options_.budget_ms;
+        const auto fast = std::count_if(recent_.end() - std::ptrdiff_t(options_.up_frames), recent_.end(),
+                                        [&](double ms) { return ms < well_under; });
+        if (double(fast) >= options_.up_share * double(options_.up_frames)) next = snap(scale_ + options_.step);
+    }
     if (next != scale_) {
         scale_ = next;
         recent_.clear();
-        under_run_ = 0;
     }
     return scale_;
 }

@@ -8,8 +8,9 @@ namespace game {
 
 // Pure logic: fed one frame time per frame, it answers the render scale for the next.
 // Slow frames bring the scale down fast (a few frames, in a step sized by how far over
-// they are: pixels cost about the scale squared); a long run of frames well under the
-// budget brings it up one small step. Between the two thresholds it holds, and after a
+// they are: pixels cost about the scale squared); a long run of frames nearly all well
+// under the budget brings it up one small step (a frame that ran two ticks, or a
+// scheduler's hiccup, among them does not keep the picture coarse). Between the two thresholds it holds, and after a
 // change it first measures frames at the new scale, so it never changes every frame.
 class ResolutionController {
 public:
@@ -21,7 +22,8 @@ public:
         float start_scale = 0.75f;     // medium's
         float step = 0.05f;            // scales are multiples of this
         size_t down_window = 6;        // frames judged for a step down (the worst one ignored)
-        size_t up_frames = 45;         // frames in a row well under the budget for a step up
+        size_t up_frames = 45;         // frames judged for a step up
+        double up_share = 0.9;         // the share of them that must be well under the budget
     };
 
     ResolutionController() : ResolutionController(Options{}) {}
@@ -37,8 +39,7 @@ private:
 
     Options options_;
     float scale_;
-    std::deque<double> recent_;  // frame times at the current scale, newest last
-    size_t under_run_ = 0;       // frames in a row well under the budget
+    std::deque<double> recent_;  // frame times at the current scale, newest last (up_frames at most)
 };
 
 }  // namespace game
