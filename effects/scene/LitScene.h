@@ -27,6 +27,10 @@ public:
     Programs programs(const FrameContext& frame, const QualitySettings& quality, bool line_lights, bool normals,
                       const Camera& camera);
 
+    // Depth only, with the lit programs' vertex stage (invariant gl_Position: the same
+    // depth to the bit), for `camera`'s view.
+    const gl::Program& depth(const Camera& camera);
+
     // The sky, only where nothing was drawn (the far plane passes GL_LEQUAL); applies
     // that depth state itself.
     void draw_sky(const FrameData& data, const Camera& camera, bool normals);
@@ -35,6 +39,7 @@ private:
     std::string label_;
     LitProgram objects_;
     std::optional<LitProgram> ground_;  // made at the first frame: it needs the level's road count
+    gl::Program depth_;
     std::array<std::optional<gl::Program>, 2> sky_;  // without, with the normals output
 };
 

@@ -20,6 +20,22 @@ void OpaquePass::render(const FrameContext& frame) {
     const std::vector<LineLight>& lights = frame.data.line_lights;
     const bool line_lights = !lights.empty();
     const Frustum view(frame.camera.view_proj);
+    // The vehicles' depth first: from the driver's seat the car's parts cover each other
+    // (the body behind the dashboard, the headliner behind the visors), and a part
+    // hidden by one drawn later was shaded for nothing. Laid a little behind (the
+    // offset), so the nearest part still passes GL_LESS when shaded and ties between
+    // parts, or with a prop or the ground, go as they went without it: the same image,
+    // each vehicle pixel shaded about once.
+    const gl::PipelineState shading{.depth_test = true, .depth_write = true, .cull_back_faces = true};
+    gl::PipelineState vehicles_depth = shading;
+    vehicles_depth.colour_write = false;
+    vehicles_depth.offset_factor = 1.0f;
+    vehicles_depth.offset_units = 1.0f;
+    gl::apply(vehicles_depth);
+    frame.resources.geometry.draw(scene_.depth(frame.camera), scene_.depth(frame.camera), frame.poses,
+                                  SceneGeometry::Use::MovingShadowCasters, view, {}, SceneGeometry::Car::Drawn,
+                                  frame.camera.eye);
+    gl::apply(shading);
     // With beams flying, what they reach is drawn with the line-light sum and the rest
     // without it: the sum is a lit pixel's costliest loop, and a beam lights a few
     // metres around it.

@@ -5,7 +5,7 @@
 namespace effects {
 
 ShadowPass::ShadowPass()
-    : program_(gl::Program::from_files("shadow", {"scene/shadow.vert.glsl", "scene/shadow.frag.glsl"})),
+    : program_(gl::Program::from_files("shadow", {"scene/shadow.vert.glsl", "scene/depth_only.frag.glsl"})),
       fbo_(gl::Framebuffer::create("shadow")) {}
 
 void ShadowPass::render(const FrameContext& frame) {

@@ -5,7 +5,7 @@
 namespace effects {
 
 SkyOcclusionPass::SkyOcclusionPass()
-    : program_(gl::Program::from_files("sky_occlusion", {"scene/shadow.vert.glsl", "scene/shadow.frag.glsl"})),
+    : program_(gl::Program::from_files("sky_occlusion", {"scene/shadow.vert.glsl", "scene/depth_only.frag.glsl"})),
       fbo_(gl::Framebuffer::create("sky_occlusion")) {}
 
 void SkyOcclusionPass::render(const FrameContext& frame) {

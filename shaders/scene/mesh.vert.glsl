@@ -10,6 +10,9 @@ uniform mat4 u_view_proj;
 out vec3 v_world_pos;
 out vec3 v_normal;
 out vec4 v_color;
+// The same position in every program made with it: the opaque pass lays the vehicles'
+// depth with one (LitScene::depth) and shades them with others.
+invariant gl_Position;
 
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
