@@ -484,6 +484,43 @@ TEST_F(EnergyRenderTest, GlowAndBloomLandInTheSceneAroundTheBeam) {
     for (float v : bloomed.pixels) ASSERT_TRUE(std::isfinite(v));
 }
 
+// The bloom bins the segments again at a quarter of the size; its lists must not land
+// where the glow's draw, maybe still rasterising, reads its own (llvmpipe did not wait:
+// harbour_energy tick 525 showed a tile of the ball without its glow, one run in a few).
+TEST_F(EnergyRenderTest, TheBloomLeavesTheGlowsListsAlone) {
+    constexpr int W = 160, H = 96;
+    RenderStage stage(make_test_level(), {.width = W, .height = H, .passes = kEnergyPass, .shadow_map_size = 512});
+    const effects::Camera cam = look({0, 20, 0}, {0, 20, -1}, W, H);
+    // Two shots, so the bloom's few tiles list other segments than the glow's first ones.
+    const std::vector<EnergySegment> shots = {segment({-3, 20, -15}, {1, 0, 0}, 6.0f, 0.12f, 1.1f),
+                                              segment({2, 21, -12}, {0, 1, 0}, 0.0f, 0.12f, 0.8f)};
+    effects::EnergyPass& energy = stage.pass<effects::EnergyPass>();
+    ASSERT_GT(energy.look().bloom, 0.0f);
+    auto frame = [&] {
+        stage.draw(cam, {.replaced = kEnergyPass,
+                         .replacement = [&](const effects::FrameContext& f) { energy.draw(f, shots); }});
+        return stage.hdr();
+    };
+    const game::ImageRGBA32F first = frame();
+    effects::EnergyTileGrid glow, bloom;
+    effects::bin_energy_segments(cam, W, H, shots, true, glow);
+    effects::bin_energy_segments(cam, W / 4, H / 4, shots, true, bloom);
+    ASSERT_FALSE(glow.tiles.empty());
+    ASSERT_FALSE(bloom.tiles.empty());
+    ASSERT_NE(bloom.tiles.front(), glow.tiles.front());
+    // What the glow's draw reads, after the bloom's uploads.
+    const effects::EnergyPass::FieldBuffers& buffers = energy.glow_buffers();
+    std::vector<glm::uvec4> tiles(glow.tiles.size());
+    std::vector<uint32_t> indices(glow.indices.size());
+    glGetNamedBufferSubData(buffers.tiles.id(), 0, GLsizeiptr(tiles.size() * sizeof(glm::uvec4)), tiles.data());
+    glGetNamedBufferSubData(buffers.tile_segments.id(), 0, GLsizeiptr(indices.size() * sizeof(uint32_t)),
+                            indices.data());
+    EXPECT_EQ(tiles, glow.tiles);
+    EXPECT_EQ(indices, glow.indices);
+    // And the same frame again, bit for bit.
+    EXPECT_EQ(frame().pixels, first.pixels);
+}
+
 // A beam standing half in the harbour: the water pass writes the sea surface into the
 // scene depth, so the part under the water is hidden like the part behind a wall.
 TEST_F(EnergyRenderTest, WaterHidesTheBeamBelowItsSurface) {

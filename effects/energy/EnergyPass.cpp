@@ -100,7 +100,7 @@ void EnergyPass::bloom(const FrameContext& frame, std::span<const sim::EnergySeg
     glClearNamedFramebufferfv(bloom_fbo_b_.id(), GL_COLOR, 0, zero);
     bloom_fbo_a_.bind();
     glViewport(0, 0, w, h);
-    draw_field(frame.camera, t.depth(), w, h, segments, false);
+    draw_field(frame.camera, t.depth(), w, h, segments, false, bloom_buffers_);
     if (tiles_.tiles.empty()) return;
     // Blur and add only around the tiles with segments (plus the blur's reach).
     glm::ivec2 lo(w, h), hi(0, 0);
@@ -139,16 +139,21 @@ void EnergyPass::bloom(const FrameContext& frame, std::span<const sim::EnergySeg
 
 void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int width, int height,
                             std::span<const sim::EnergySegment> segments, bool raw) {
+    draw_field(camera, depth, width, height, segments, raw, glow_buffers_);
+}
+
+void EnergyPass::draw_field(const Camera& camera, const gl::Texture& depth, int width, int height,
+                            std::span<const sim::EnergySegment> segments, bool raw, FieldBuffers& buffers) {
     bin_energy_segments(camera, width, height, segments, method_.tile_culling, tiles_);
     if (tiles_.tiles.empty()) return;
     std::vector<SegmentGpu> gpu(segments.size());
     for (size_t i = 0; i < segments.size(); ++i) gpu[i] = segment_gpu(segments[i], glm::dvec3(camera.eye));
-    gl::upload_growing(segments_, "energy.segments", std::as_bytes(std::span(gpu)));
-    gl::upload_growing(tile_list_, "energy.tiles", std::as_bytes(std::span(tiles_.tiles)));
-    gl::upload_growing(tile_segments_, "energy.tile_segments", std::as_bytes(std::span(tiles_.indices)));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSegmentBinding, segments_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, tile_list_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileSegmentBinding, tile_segments_.id());
+    gl::upload_growing(buffers.segments, "energy.segments", std::as_bytes(std::span(gpu)));
+    gl::upload_growing(buffers.tiles, "energy.tiles", std::as_bytes(std::span(tiles_.tiles)));
+    gl::upload_growing(buffers.tile_segments, "energy.tile_segments", std::as_bytes(std::span(tiles_.indices)));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSegmentBinding, buffers.segments.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBinding, buffers.tiles.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileSegmentBinding, buffers.tile_segments.id());
 
     program_.use();
     program_.set("u_viewport", glm::vec2(float(width), float(height)));

@@ -50,17 +50,29 @@ public:
     void draw_field(const Camera& camera, const gl::Texture& depth, int width, int height,
                     std::span<const sim::EnergySegment> segments, bool raw);
 
+    // The GPU lists one draw of the field reads: its segments, tiles and tiles' segments.
+    struct FieldBuffers {
+        gl::Buffer segments, tiles, tile_segments;
+    };
+    // The full-resolution glow's (draw_field's); the bloom has its own.
+    const FieldBuffers& glow_buffers() const { return glow_buffers_; }
+
     EnergyLook& look() { return look_; }
     EnergyMethod& method() { return method_; }
     const EnergyTileGrid& tiles() const { return tiles_; }  // of the last draw
 
 private:
     void bloom(const FrameContext& frame, std::span<const sim::EnergySegment> segments);
+    void draw_field(const Camera& camera, const gl::Texture& depth, int width, int height,
+                    std::span<const sim::EnergySegment> segments, bool raw, FieldBuffers& buffers);
 
     gl::Program program_, blur_, add_;
     gl::Texture bloom_a_, bloom_b_;  // quarter resolution: the glow, and the half-blurred glow
     gl::Framebuffer bloom_fbo_a_, bloom_fbo_b_;
-    gl::Buffer segments_, tile_list_, tile_segments_;
+    // Apart, so that the bloom's upload does not rewrite lists the glow's draw may still be
+    // reading: llvmpipe rasterises that draw after the call returns and did not wait for
+    // it before the update, so now and then a tile shaded with the bloom's segments.
+    FieldBuffers glow_buffers_, bloom_buffers_;
     gl::Framebuffer fbo_;
     uint64_t generation_ = 0;  // SceneTargets::generation() fbo_ was built for
     EnergyTileGrid tiles_;
