@@ -9,12 +9,12 @@
 namespace effects {
 
 LitScene::LitScene(std::string label)
-    : label_(std::move(label)), objects_(label_ + ".objects", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"}),
-      depth_(gl::Program::from_files(label_ + ".depth", {"scene/mesh.vert.glsl", "scene/depth_only.frag.glsl"})) {}
+    : label_(std::move(label)), objects_(label_ + ".objects", {"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"}) {}
 
 const gl::Program& LitScene::depth(const Camera& camera) {
-    depth_.set("u_view_proj", camera.view_proj);
-    return depth_;
+    if (!depth_) depth_ = gl::Program::from_files(label_ + ".depth", {"scene/mesh.vert.glsl", "scene/depth_only.frag.glsl"});
+    depth_->set("u_view_proj", camera.view_proj);
+    return *depth_;
 }
 
 LitScene::Programs LitScene::programs(const FrameContext& frame, const QualitySettings& quality, bool line_lights,

@@ -39,7 +39,7 @@ private:
     std::string label_;
     LitProgram objects_;
     std::optional<LitProgram> ground_;  // made at the first frame: it needs the level's road count
-    gl::Program depth_;
+    std::optional<gl::Program> depth_;  // made at first use: the mirror never asks
     std::array<std::optional<gl::Program>, 2> sky_;  // without, with the normals output
 };
 

@@ -32,7 +32,8 @@ void OpaquePass::render(const FrameContext& frame) {
     vehicles_depth.offset_factor = 1.0f;
     vehicles_depth.offset_units = 1.0f;
     gl::apply(vehicles_depth);
-    frame.resources.geometry.draw(scene_.depth(frame.camera), scene_.depth(frame.camera), frame.poses,
+    const gl::Program& depth = scene_.depth(frame.camera);
+    frame.resources.geometry.draw(depth, depth, frame.poses,
                                   SceneGeometry::Use::MovingShadowCasters, view, {}, SceneGeometry::Car::Drawn,
                                   frame.camera.eye);
     gl::apply(shading);

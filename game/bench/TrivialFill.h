@@ -6,14 +6,14 @@
 
 namespace game {
 
+inline constexpr int kFillsPerSample = 8;
 // `repeats` samples in milliseconds (after an untimed round that compiles llvmpipe's
 // variant), each the mean of kFillsPerSample fills drawn back to back into as many
-// targets, as a frame's passes run. A lone fill timed on its own reads 0.4, 0.7 or
-// 1.35 ms on the same machine from one moment to the next (llvmpipe's threads and the
-// last target still in cache); eight in a row read within a few percent of each other.
-// Needs a current GL context; leaves the default framebuffer bound.
+// targets, as a frame's passes run. A lone fill timed on its own read 0.4, 0.7 or
+// 1.35 ms on one machine from one moment to the next, for reasons not found; eight in a
+// row read within a few percent of each other. Needs a current GL context; leaves the
+// default framebuffer bound.
 std::vector<double> trivial_fill_samples(int width, int height, int repeats);
-inline constexpr int kFillsPerSample = 8;
 // The median of `samples`: the upper of the middle two for an even count, 0 for none.
 double median_ms(std::vector<double> samples);
 

@@ -10,8 +10,9 @@ namespace game {
 // Slow frames bring the scale down fast (a few frames, in a step sized by how far over
 // they are: pixels cost about the scale squared); a long run of frames nearly all well
 // under the budget brings it up one small step (a frame that ran two ticks, or a
-// scheduler's hiccup, among them does not keep the picture coarse). Between the two thresholds it holds, and after a
-// change it first measures frames at the new scale, so it never changes every frame.
+// scheduler's hiccup, among them does not keep the picture coarse). Between the two
+// thresholds it holds, and after a change it first measures frames at the new scale, so
+// it never changes every frame.
 class ResolutionController {
 public:
     struct Options {
