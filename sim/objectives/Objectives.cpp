@@ -43,13 +43,5 @@ void Objectives::step(StepContext& ctx) {
     targets_.hit_by(thrown_->objects(), weapon_->shots(), ticks);
 }
 
-uint64_t Objectives::hash() const {
-    Hasher h;
-    for (const Course& c : courses_) c.hash(h);
-    targets_.hash(h);
-    h.vec(car_xz_);
-    h.vec(boat_xz_);
-    return h.value();
-}
 
 }  // namespace sim

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Car.h"
@@ -440,20 +439,5 @@ double RainSim::mass_on_glass_mg() const {
     return m;
 }
 
-uint64_t RainSim::hash() const {
-    Hasher h;
-    h.u64(rng_.state());
-    h.u64(tick_);
-    h.f32(motor_.phase());
-    h.f32(motor_.pause_s());
-    for (const WiperBlade& b : blades_) {
-        h.f32(b.angle_rad());
-        h.f32(b.previous_rad());
-    }
-    h.bytes(&ledger_, sizeof ledger_);
-    uint64_t v = hash_combine(h.value(), hash_words(drops_.data(), drops_.size() * sizeof(RainDrop)));
-    v = hash_combine(v, hash_words(particles_.data(), particles_.size() * sizeof(WaterParticle)));
-    return hash_combine(v, hash_words(wet_tick_.data(), wet_tick_.size() * sizeof(uint32_t)));
-}
 
 }  // namespace sim

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/vehicle/Contact.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/World.h"
@@ -192,14 +191,5 @@ void Boat::reset(const Terrain& terrain) {
     u_ = v_ = r_ = heave_rate_ = pitch_rate_ = roll_rate_ = 0.0f;
 }
 
-uint64_t Boat::hash() const {
-    Hasher hs;
-    hs.vec(pose_.position);
-    hs.f32(pose_.heading_rad);
-    hs.f32(pose_.pitch_rad);
-    hs.f32(pose_.roll_rad);
-    for (float f : {u_, v_, r_, heave_rate_, pitch_rate_, roll_rate_}) hs.f32(f);
-    return hs.value();
-}
 
 }  // namespace sim

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/vehicle/Contact.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/World.h"
@@ -294,19 +293,5 @@ void Car::follow_ground(const Terrain& terrain) {
     pose_.roll_rad = det::atan2(left - right, kTrack_m);
 }
 
-uint64_t Car::hash() const {
-    Hasher hs;
-    hs.vec(pose_.position);
-    hs.f32(pose_.heading_rad);
-    hs.f32(pose_.pitch_rad);
-    hs.f32(pose_.roll_rad);
-    hs.f32(u_);
-    hs.f32(v_);
-    hs.f32(r_);
-    hs.f32(steer_);
-    hs.f32(wheel_spin_);
-    hs.f32(scraping_s_);
-    return hs.value();
-}
 
 }  // namespace sim

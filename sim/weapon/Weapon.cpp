@@ -5,7 +5,6 @@
 #include <optional>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
@@ -130,27 +129,5 @@ void Weapon::step(StepContext& ctx) {
     });
 }
 
-uint64_t Weapon::hash() const {
-    Hasher h;
-    h.u64(rng_.state());
-    h.u32(uint32_t(shots_.size()));
-    for (const Shot& s : shots_) {
-        h.vec(s.origin);
-        h.vec(s.direction);
-        h.f32(s.phase);
-        h.u32(s.age_ticks);
-        h.u32(s.hit_age_ticks);
-        h.f32(s.hit_distance_m);
-        for (const EnergySegment& seg : s.segments) {
-            h.vec(seg.start);
-            h.vec(seg.direction);
-            h.f32(seg.length_m);
-            h.f32(seg.sphere_strength);
-            h.f32(seg.beam_strength);
-            h.f32(seg.radius_m);
-        }
-    }
-    return h.value();
-}
 
 }  // namespace sim

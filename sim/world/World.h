@@ -3,7 +3,9 @@
 // It is assembled from a list of subsystem entries (sim/world/SubsystemEntry.h), each
 // connected once to what it reads. step() applies one quantised TickInput; hash()
 // names every subsystem's state.
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -55,6 +57,20 @@ public:
     // refused rather than silently diverging.
     uint64_t sim_signature() const;
 
+    // A snapshot of the whole state (sim/world/WorldSnapshot.cpp, docs/REPLAYS.md): a
+    // fresh world of the same level restored from it steps on with exactly this one's
+    // hashes. `level_hash` is the content hash of the level's files (the game loads them;
+    // the sim never sees files), stored so that another level's snapshot is refused.
+    std::vector<uint8_t> snapshot(uint64_t level_hash) const;
+    // Throws SnapshotError (sim/core/StateArchive.h) with a message saying why for a
+    // snapshot of another sim version or subsystems, or of another level (the world is
+    // left as it was), or one that is cut or corrupt (the world is then half restored:
+    // throw it away).
+    void restore(std::span<const uint8_t> snapshot, uint64_t level_hash);
+    // How many snapshots this world was restored from: a presentation cache that remembers
+    // earlier frames (previous poses, uploaded revisions) resets when it changes.
+    uint64_t restore_generation() const { return restore_generation_; }
+
     const LevelDesc& level() const { return level_; }
     const Terrain& terrain() const { return terrain_; }
     // A wave simulation in the world (Subsystem::sea_surface), else the flat sea.
@@ -87,6 +103,7 @@ private:
     std::vector<std::unique_ptr<Subsystem>> subsystems_;
     uint64_t tick_ = 0;
     TickInput previous_;
+    uint64_t restore_generation_ = 0;
 };
 
 }  // namespace sim
