@@ -35,7 +35,7 @@ commands:
          Record a replay headless from an input script (see replays/*.script).
   replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
               [--update-goldens] [--require-goldens] [--strict] [--threads N]
-              [--level NAME|PATH] [--quality Q]
+              [--level NAME|PATH] [--quality Q] [--audio OUT.wav]
          Play a replay in a window (at --quality), or headless. --check verifies every stored hash and
          compares the checkpoint frames with the goldens beside the replay
          (replays/NAME/tick_NNNNNN.png); failures write the actual frame and a
@@ -44,6 +44,8 @@ commands:
          --exr also as EXR (half-float HDR colour, depth, normals). --strict refuses a
          replay that was cut short. --update-goldens rewrites the goldens. A checkpoint
          with no golden yet is reported and skipped; --require-goldens fails the check.
+         --audio (with --headless) renders the replay's sound offline to OUT.wav
+         (48 kHz float stereo, the replay's cameras listening).
   timedemo REPLAY [--size WxH] [--quality Q] [--json FILE] [--headless] [--threads N]
          Play a replay through play's frame loop in real time, every frame drawn with
          the HUD (a window if there is a display, else headless at --size, default

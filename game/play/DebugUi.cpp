@@ -153,7 +153,7 @@ bool DebugUi::draw_debug_panel(effects::Renderer& renderer, QualityChoice& quali
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10.0f, viewport->WorkPos.y + 10.0f),
                             ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(380.0f, viewport->WorkSize.y * 0.8f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Debug (F1)", open)) {
+    if (!ImGui::Begin(kDebugPanelTitle, open)) {
         ImGui::End();
         return false;
     }

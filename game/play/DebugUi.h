@@ -18,6 +18,9 @@ struct GLFWwindow;
 
 namespace game {
 
+// The F1 panel's window: others add their own controls to it (SoundPanel).
+inline constexpr const char* kDebugPanelTitle = "Debug (F1)";
+
 struct HudState {
     float speed_kmh = 0.0f;  // signed: negative when reversing
     sim::Vehicle vehicle = sim::Vehicle::Car;

@@ -54,6 +54,7 @@ std::optional<UiAction> ui_action_for_key(int glfw_key) {
         case GLFW_KEY_F1: return UiAction::ToggleDebugPanel;
         case GLFW_KEY_F2: return UiAction::ToggleProfileTiming;
         case GLFW_KEY_F3: return UiAction::ToggleAntialiasing;
+        case GLFW_KEY_M: return UiAction::ToggleMute;
         case GLFW_KEY_ESCAPE: return UiAction::Quit;
         default: return std::nullopt;
     }

@@ -26,7 +26,7 @@ sim::TickInput input_from_keys(const std::function<bool(int glfw_key)>& down);
 std::optional<sim::Control> control_for_key(int glfw_key);
 
 // Keys that work on the program, acted on once per press.
-enum class UiAction { Pause, Screenshot, ToggleDebugPanel, ToggleProfileTiming, ToggleAntialiasing, Quit };
+enum class UiAction { Pause, Screenshot, ToggleDebugPanel, ToggleProfileTiming, ToggleAntialiasing, ToggleMute, Quit };
 
 std::optional<UiAction> ui_action_for_key(int glfw_key);
 

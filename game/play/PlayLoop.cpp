@@ -10,6 +10,7 @@
 #include "game/play/FixedStepClock.h"
 #include "game/play/KeyboardInput.h"
 #include "game/play/ObjectiveHud.h"
+#include "game/play/SoundPanel.h"
 #include "game/play/WayfindingHud.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
@@ -107,6 +108,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
             input_.set_down(down);
         }
         const bool idle = is_idle();  // the events may have paused or unfocused it
+        if (options_.sound) options_.sound->set_paused(idle);
 
         const auto now = Clock::now();
         const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(now - last);
@@ -122,10 +124,8 @@ void PlayLoop::run(const LoopHooks& hooks) {
                     input_ended = true;
                     break;
                 }
-                const sim::TickInput applied = sim::quantise(*input);
                 previous_poses_ = poses_now(world);
-                world.step(applied);
-                hooks.after_tick(world, applied);
+                hooks.ticks->step(*input);
                 ++record.ticks;
             }
             record.dropped = clock.dropped();
@@ -192,6 +192,9 @@ void PlayLoop::on_ui_action(UiAction action) {
                                      : effects::gl::TimingMode::Profile);
             break;
         case UiAction::ToggleAntialiasing: renderer_.set_antialiasing(!renderer_.antialiasing()); break;
+        case UiAction::ToggleMute:
+            if (options_.sound) options_.sound->toggle_mute();
+            break;
         case UiAction::Quit: screen_.request_close(); break;
     }
 }
@@ -234,6 +237,7 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     if (panel_open_) {
         QualityChoice quality = quality_;
         if (ui_.draw_debug_panel(renderer_, quality, &panel_open_)) set_quality(quality);
+        if (options_.sound) draw_sound_panel(*options_.sound);
     }
     ui_.end_frame();
 

@@ -10,6 +10,7 @@
 
 #include "effects/Renderer.h"
 #include "effects/gl/DebugOutput.h"
+#include "game/audio/LiveSound.h"
 #include "game/play/DebugUi.h"
 #include "game/play/GamepadInput.h"
 #include "game/play/InputQueue.h"
@@ -18,6 +19,7 @@
 #include "game/play/Screen.h"
 #include "game/replay/CameraTrack.h"
 #include "game/session/GameSession.h"
+#include "game/session/TickDriver.h"
 
 namespace game {
 
@@ -38,8 +40,8 @@ struct FrameRecord {
 struct LoopHooks {
     // The input for the next tick, or nothing once it has run out. Unset: the keyboard.
     std::function<std::optional<sim::TickInput>()> next_input;
-    // Called after each tick with the (quantised) input that was applied.
-    std::function<void(const sim::World&, sim::TickInput)> after_tick;
+    // Steps the session's world and tells its listeners (recorder, checker, sound).
+    TickDriver* ticks = nullptr;
     // A line for the HUD (recording state, replay progress, a desync).
     std::function<std::string()> status;
     std::function<bool()> recording;
@@ -54,6 +56,8 @@ struct LoopOptions {
     bool end_with_input = false;
     // A replay's scripted cameras (none: the player's camera throughout).
     CameraTrack cameras;
+    // The sound, paused with the game, muted by M, its volumes in the F1 panel (none: silent).
+    LiveSound* sound = nullptr;
 };
 
 class PlayLoop {

@@ -27,7 +27,8 @@ std::vector<std::string> demo_replay_args(const fs::path& replay, uint32_t ticks
 
 int play_in_window(GameSession& session, const PlayOptions& options) {
     WindowScreen screen(Window::Options{1280, 720, "Spindrift", true});
-    PlayLoop loop(session, screen, LoopOptions{.quality = options.quality});
+    std::unique_ptr<LiveSound> sound = LiveSound::open(CameraTrack{});
+    PlayLoop loop(session, screen, LoopOptions{.quality = options.quality, .sound = sound.get()});
     std::optional<ReplayWriter> writer;
     if (options.record) {
         writer.emplace(ReplayWriter::create(*options.record, replay_header_for(session, 480, 270, {})));
@@ -35,8 +36,8 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
                   << options.record->string() << " at the end)" << std::endl;
     }
     bool recording = writer.has_value();
-    LoopHooks hooks;  // no next_input: the keyboard drives
-    hooks.after_tick = [&](const sim::World& world, sim::TickInput applied) {
+    TickDriver ticks(*session.world);
+    ticks.listen([&](const sim::World& world, sim::TickInput applied) {
         if (!recording) return;
         writer->append(applied, world.hash());
         if (writer->ticks() >= kMaxReplayTicks) {
@@ -45,7 +46,10 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
             recording = false;
             std::cout << "recording stopped at the " << kMaxReplayTicks << "-tick limit" << std::endl;
         }
-    };
+    });
+    if (sound) ticks.listen([&](const sim::World& world, sim::TickInput) { sound->after_tick(world); });
+    LoopHooks hooks;  // no next_input: the keyboard drives
+    hooks.ticks = &ticks;
     hooks.status = [] { return std::string(); };
     hooks.recording = [&] { return recording; };
     loop.run(hooks);
@@ -58,20 +62,23 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
 
 int play_replay_in_window(const Replay& replay, GameSession& session, QualityChoice quality) {
     WindowScreen screen(Window::Options{1280, 720, "Spindrift - replay", true});
-    PlayLoop loop(session, screen,
-                  LoopOptions{.quality = quality,
-                              .cameras = CameraTrack(replay.header.camera_shots, replay.header.tick_rate_hz)});
+    const CameraTrack cameras(replay.header.camera_shots, replay.header.tick_rate_hz);
+    std::unique_ptr<LiveSound> sound = LiveSound::open(cameras);
+    PlayLoop loop(session, screen, LoopOptions{.quality = quality, .cameras = cameras, .sound = sound.get()});
     ReplayChecker checker(replay);
     std::optional<Divergence> divergence;
     size_t next = 0;
+    TickDriver ticks(*session.world);
+    ticks.listen([&](const sim::World& world, sim::TickInput) {
+        if (divergence) return;
+        if ((divergence = checker.after_step(world))) std::cout << "DESYNC at " << divergence->message << std::endl;
+    });
+    if (sound) ticks.listen([&](const sim::World& world, sim::TickInput) { sound->after_tick(world); });
     LoopHooks hooks;
+    hooks.ticks = &ticks;
     hooks.next_input = [&]() -> std::optional<sim::TickInput> {
         if (next >= replay.inputs.size()) return std::nullopt;
         return replay.inputs[next++];
-    };
-    hooks.after_tick = [&](const sim::World& world, sim::TickInput) {
-        if (divergence) return;
-        if ((divergence = checker.after_step(world))) std::cout << "DESYNC at " << divergence->message << std::endl;
     };
     hooks.status = [&] {
         std::string s = "replay " + std::to_string(next) + "/" + std::to_string(replay.inputs.size());

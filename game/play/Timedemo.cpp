@@ -40,15 +40,17 @@ TimedemoRun run_timedemo(const Replay& replay, const std::string& replay_name, G
     size_t next = 0;
     std::map<std::string, size_t> pass_index;
     std::vector<double> pass_sums;
-    LoopHooks hooks;
-    hooks.next_input = [&]() -> std::optional<sim::TickInput> {
-        if (next >= replay.inputs.size()) return std::nullopt;
-        return replay.inputs[next++];
-    };
-    hooks.after_tick = [&](const sim::World& world, sim::TickInput) {
+    TickDriver ticks(*session.world);
+    ticks.listen([&](const sim::World& world, sim::TickInput) {
         ++run.ticks;
         if (run.desync) return;
         if (auto divergence = checker.after_step(world)) run.desync = divergence->message;
+    });
+    LoopHooks hooks;
+    hooks.ticks = &ticks;
+    hooks.next_input = [&]() -> std::optional<sim::TickInput> {
+        if (next >= replay.inputs.size()) return std::nullopt;
+        return replay.inputs[next++];
     };
     hooks.status = [&] {
         return "timedemo " + std::to_string(next) + "/" + std::to_string(replay.inputs.size()) +

@@ -45,6 +45,7 @@ public:
 private:
     std::vector<Course> courses_;
     Targets targets_;
+    std::vector<glm::vec3> target_positions_;  // for the tick report
     glm::vec2 car_xz_, boat_xz_;  // as of the last tick
 
     // Connected at assembly (connect).

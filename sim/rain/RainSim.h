@@ -124,6 +124,7 @@ private:
     std::vector<uint32_t> wet_tick_;     // tick + 1 a drop last ran into the cell, 0 never
     std::vector<uint8_t> heavy_;         // particles_to_grid: the cell's drop defers conversions
     RainLedger ledger_;
+    uint32_t landed_ = 0;                // drops that reached the glass this tick (tick report; not hashed)
     uint64_t tick_ = 0;
     float particle_r_m_;
     float hold_ref_;                     // what holds a slide-mass drop, m/s^2

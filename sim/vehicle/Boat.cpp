@@ -42,7 +42,11 @@ void Boat::step(StepContext& ctx) {
     if (player.resets() && player.vehicle() == Vehicle::Boat) reset(ctx.world.terrain());
     DriveInput in = player.drive_input(Vehicle::Boat);
     float h = ctx.dt / kSubsteps;
+    touch_impulse_ns_ = 0.0f;
     for (int i = 0; i < kSubsteps; ++i) substep(in, ctx.world, h);
+    if (touch_impulse_ns_ > 0.0f)
+        ctx.world.report().contacts.push_back(
+            {ContactBody::Boat, pose_.position + glm::vec3(touch_offset_.x, 0.0f, touch_offset_.y), touch_impulse_ns_});
 }
 
 void Boat::substep(const DriveInput& in, const World& world, float h) {
@@ -140,7 +144,14 @@ void Boat::touch(glm::vec2 offset, glm::vec2 normal) {
     glm::vec3 w = velocity();
     const float yaw_inertia = p_.mass_kg * (p_.length_m * p_.length_m + p_.beam_m * p_.beam_m) / 12.0f;
     PlanarBody body{{w.x, w.z}, r_, p_.mass_kg, yaw_inertia};
+    const glm::vec2 before = body.velocity;
     sim::touch(body, offset, normal, kFender);
+    // The impulse along the normal, from the change of momentum it made.
+    const float impulse = p_.mass_kg * ((body.velocity.x - before.x) * normal.x + (body.velocity.y - before.y) * normal.y);
+    if (impulse > touch_impulse_ns_) {
+        touch_impulse_ns_ = impulse;
+        touch_offset_ = offset;
+    }
     u_ = body.velocity.x * fwd.x + body.velocity.y * fwd.z;
     v_ = body.velocity.x * left.x + body.velocity.y * left.z;
     r_ = body.yaw_rate;

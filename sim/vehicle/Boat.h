@@ -65,6 +65,9 @@ private:
     Pose pose_;
     float u_ = 0.0f, v_ = 0.0f, r_ = 0.0f;  // forward, leftward speed; yaw rate
     float heave_rate_ = 0.0f, pitch_rate_ = 0.0f, roll_rate_ = 0.0f;
+    // This tick's hardest contact, for the tick report only (not state, not hashed).
+    float touch_impulse_ns_ = 0.0f;
+    glm::vec2 touch_offset_{0.0f};
 
     // Connected at assembly (connect).
     const Player* player_ = nullptr;

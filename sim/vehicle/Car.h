@@ -78,6 +78,9 @@ private:
     float steer_ = 0.0f;  // front wheel angle, rad (positive turns left)
     float wheel_spin_ = 0.0f;
     float scraping_s_ = 0.0f;  // time left of the last contact's hold on the tyres
+    // This tick's hardest contact, for the tick report only (not state, not hashed).
+    float touch_impulse_ns_ = 0.0f;
+    glm::vec2 touch_offset_{0.0f};
     glm::vec2 accel_{0.0f};
 
     // Connected at assembly (connect).

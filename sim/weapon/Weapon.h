@@ -13,6 +13,7 @@
 #include "sim/core/Rng.h"
 #include "sim/weapon/EnergySegment.h"
 #include "sim/world/DescribedSubsystem.h"
+#include "sim/world/TickReport.h"
 #include "sim/world/WorldEvents.h"
 
 namespace sim {
@@ -82,7 +83,9 @@ public:
 
 private:
     // Ages a shot by one tick, detects its impact and lays out its segments.
-    void advance(Shot& s, const World& world, float dt, std::vector<WaterEntry>& water_entries) const;
+    // Its impact, if any, goes to `impacts` (the tick report).
+    void advance(Shot& s, const World& world, float dt, std::vector<WaterEntry>& water_entries,
+                 std::vector<ShotReport>& impacts) const;
     void shape(Shot& s, float dt) const;
 
     WeaponParams p_;

@@ -17,6 +17,7 @@
 #include "sim/world/Subsystem.h"
 #include "sim/world/SubsystemEntry.h"
 #include "sim/world/Terrain.h"
+#include "sim/world/TickReport.h"
 #include "sim/world/WorldEvents.h"
 #include "sim/world/WorldHash.h"
 
@@ -77,6 +78,10 @@ public:
     const SeaSurface& sea() const { return *sea_; }
     WorldEvents& events() { return events_; }
     const WorldEvents& events() const { return events_; }
+    // What the last step did, for readers outside the sim (TickReport.h): subsystems
+    // write it and never read it; it is not hashed.
+    TickReport& report() { return report_; }
+    const TickReport& report() const { return report_; }
     TickInput last_input() const { return previous_; }
     JobPool& jobs() { return jobs_; }
 
@@ -100,6 +105,7 @@ private:
     const SeaSurface* sea_;
     JobPool jobs_;
     WorldEvents events_;
+    TickReport report_;
     std::vector<std::unique_ptr<Subsystem>> subsystems_;
     uint64_t tick_ = 0;
     TickInput previous_;
