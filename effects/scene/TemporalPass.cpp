@@ -1,6 +1,7 @@
 #include "effects/scene/TemporalPass.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include "effects/gl/EmptyVertexArray.h"
@@ -42,6 +43,14 @@ void TemporalPass::render(const FrameContext& frame) {
     const Camera& camera = frame.camera;
     const glm::mat4 unjittered =
         glm::translate(glm::mat4(1.0f), glm::vec3(-camera.jitter_ndc, 0.0f)) * camera.view_proj;
+    // The vehicle nearest the eye (the one the camera rides or follows) moves with its
+    // pose, not with the world: its pixels' last place is through its last pose.
+    const sim::Pose& ridden = glm::distance(frame.poses.car.position, camera.eye) <=
+                                      glm::distance(frame.poses.boat.position, camera.eye)
+                                  ? frame.poses.car
+                                  : frame.poses.boat;
+    const glm::mat4 vehicle = ridden.matrix();
+    const glm::mat4 last_vehicle = history && has_vehicle_ ? last_vehicle_ : vehicle;
 
     t.history_fbo().bind();
     glViewport(0, 0, t.width(), t.height());
@@ -54,6 +63,7 @@ void TemporalPass::render(const FrameContext& frame) {
     // was in the last frame's unjittered view: the world is taken as still, what moves is
     // left to the clamp.
     program_.set("u_reproject", last_view_proj_ * camera.inv_view_proj);
+    program_.set("u_reproject_vehicle", last_view_proj_ * last_vehicle * glm::inverse(vehicle) * camera.inv_view_proj);
     program_.set("u_current_weight", history ? current_weight_ : 1.0f);
     (frame.resources.quality.antialias ? t.antialiased() : t.display()).bind(0);
     t.previous_history().bind(1);
@@ -62,6 +72,8 @@ void TemporalPass::render(const FrameContext& frame) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     last_view_proj_ = unjittered;
+    last_vehicle_ = vehicle;
+    has_vehicle_ = true;
     has_history_ = true;
     history_generation_ = t.generation();
 }

@@ -7,7 +7,8 @@
 uniform sampler2D u_current;  // tone-mapped, this frame (texels)
 uniform sampler2D u_history;  // the last resolved frame, bilinear
 uniform sampler2D u_depth;    // this frame's window depth
-uniform mat4 u_reproject;     // this frame's NDC -> the last frame's clip space
+uniform mat4 u_reproject;     // this frame's NDC -> the last frame's clip space, the world still
+uniform mat4 u_reproject_vehicle;  // the same for a point on the vehicle nearest the eye
 uniform float u_current_weight;  // 1: no history (the first frame, a resize)
 layout(location = 0) out vec4 o_colour;
 
@@ -24,9 +25,21 @@ void main() {
 
     const float depth = texelFetch(u_depth, p, 0).r;
     const vec2 ndc = (gl_FragCoord.xy / vec2(last + 1)) * 2.0 - 1.0;
-    const vec4 before = u_reproject * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-    const vec2 uv = (before.xy / before.w) * 0.5 + 0.5;
-    const vec3 h = clamp(texture(u_history, uv).rgb, lo, hi);
+    const vec4 point = vec4(ndc, depth * 2.0 - 1.0, 1.0);
+    vec4 before = u_reproject * point;
+    vec2 uv = (before.xy / before.w) * 0.5 + 0.5;
+    vec3 h = texture(u_history, uv).rgb;
+    // Two candidates for where the point was (the world's, the vehicle's): the one whose
+    // history is nearer this frame's colour.
+    const vec4 before_vehicle = u_reproject_vehicle * point;
+    const vec2 uv_vehicle = (before_vehicle.xy / before_vehicle.w) * 0.5 + 0.5;
+    const vec3 h_vehicle = texture(u_history, uv_vehicle).rgb;
+    if (dot(h_vehicle - c, h_vehicle - c) < dot(h - c, h - c)) {
+        before = before_vehicle;
+        uv = uv_vehicle;
+        h = h_vehicle;
+    }
+    h = clamp(h, lo, hi);
     // Off the last frame's edge there is nothing to blend with.
     const bool inside = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) && before.w > 0.0;
     o_colour = vec4(mix(h, c, inside ? u_current_weight : 1.0), 1.0);
