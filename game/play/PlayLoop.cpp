@@ -62,12 +62,18 @@ PlayLoop::PlayLoop(GameSession& session, Screen& screen, LoopOptions options)
 void PlayLoop::set_quality(QualityChoice quality) {
     quality_ = quality;
     renderer_.set_quality(preset_of(quality));
+    // Auto draws the scene small: temporal upsampling takes its stairs out.
+    renderer_.set_temporal(quality == QualityChoice::Auto);
     resolution_.reset();
     if (quality == QualityChoice::Auto) {
         ResolutionController::Options o;
         o.start_scale = renderer_.render_scale();
         resolution_.emplace(o);
         renderer_.set_render_scale(resolution_->scale());
+    }
+    if (options_.render_scale) {
+        resolution_.reset();
+        renderer_.set_render_scale(*options_.render_scale);
     }
 }
 
@@ -220,7 +226,6 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     hud.behind = Clock::now() < behind_until_;
     hud.recording = hooks.recording();
     hud.status = hooks.status();
-    hud.passes = renderer_.pass_times();
     hud.quality = quality_choice_name(quality_);
     hud.render_scale = renderer_.render_scale();
     hud.render_width = renderer_.targets().width();
@@ -239,7 +244,16 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
         if (ui_.draw_debug_panel(renderer_, quality, &panel_open_)) set_quality(quality);
         if (options_.sound) draw_sound_panel(*options_.sound);
     }
+    // The UI's own time (at the output's size), exact one frame in eight: glFinish
+    // before and after it, as the renderer's sampled pass times.
+    const bool time_ui = ++ui_frames_ % 8 == 0;
+    if (time_ui) glFinish();
+    const auto ui_start = Clock::now();
     ui_.end_frame();
+    if (time_ui) {
+        glFinish();
+        ui_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - ui_start).count();
+    }
 
     if (screenshot_wanted_) {
         screenshot_wanted_ = false;

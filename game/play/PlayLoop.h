@@ -50,6 +50,8 @@ struct LoopHooks {
 
 struct LoopOptions {
     QualityChoice quality = QualityChoice::Auto;
+    // A fixed render scale instead of the preset's (on auto, instead of its controller).
+    std::optional<float> render_scale;
     // A game idles while its window has lost the focus; a timedemo does not.
     bool pause_when_unfocused = true;
     // Stop once the input has run out (timedemo); otherwise the last frame stays up.
@@ -71,6 +73,9 @@ public:
 
     void set_quality(QualityChoice quality);
     const effects::Renderer& renderer() const { return renderer_; }
+    // The UI's (HUD, text, debug panel) time at the output's size, its latest exact
+    // measurement (one frame in eight).
+    double ui_ms() const { return ui_ms_; }
 
 private:
     using Clock = std::chrono::steady_clock;
@@ -111,6 +116,8 @@ private:
     FpsMeter fps_;
     bool paused_ = false;
     bool panel_open_ = false;
+    uint64_t ui_frames_ = 0;
+    double ui_ms_ = 0.0;
     bool screenshot_wanted_ = false;
     Clock::time_point behind_until_{};  // the HUD says "behind real time" until then
 };
