@@ -107,6 +107,9 @@ void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch, float s
             const glm::vec2 out(v.position.x - sheet.centre_xz->x, v.position.z - sheet.centre_xz->y);
             if (glm::dot(out, out) > 1e-12f) v.normal = glm::normalize(glm::vec3(out.x, 0.0f, out.y));
             vertices[top].normal = v.normal;
+            // The column widens towards its foot, where it rises out of the water.
+            v.position.x = sheet.centre_xz->x + out.x * kJetFootFlare;
+            v.position.z = sheet.centre_xz->y + out.y * kJetFootFlare;
             v.position.y = sea_level_m - kJetFootDepthM;
             vertices.push_back(v);
         }

@@ -50,6 +50,7 @@ struct SplashSheetMesh {
     static constexpr float kJetMaxLean = 0.25f;  // sideways travel over height, at most
     static constexpr float kJetLowM = 0.15f, kJetHighM = 0.35f;
     static constexpr float kJetFootDepthM = 0.15f;  // how far below sea level its side goes
+    static constexpr float kJetFootFlare = 1.8f;    // its side's bottom, over the outline's distance from the axis
 
 private:
     std::vector<glm::vec3> shown_;  // scratch: the sheet's positions as drawn
