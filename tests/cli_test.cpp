@@ -429,6 +429,12 @@ TEST_F(Cli, TimedemoHeadlessReportsItsNumbersAsJson) {
     EXPECT_TRUE(j["desync"].is_null());
     EXPECT_FALSE(j["passes"].empty());
     for (const auto& p : j["passes"]) EXPECT_GE(p["ms"].get<double>(), 0.0) << p["name"];
+    // The opaque pass draws (the scene's meshes), and the frame's total holds it.
+    bool opaque_drew = false;
+    for (const auto& d : j["draws"])
+        if (d["name"] == "opaque") opaque_drew = d["draws"].get<double>() > 0.0 && d["triangles"].get<double>() > 0.0;
+    EXPECT_TRUE(opaque_drew) << j["draws"].dump();
+    EXPECT_GT(j["frame_draws"]["triangles"].get<double>(), 0.0);
     double seconds = 0.0;
     for (const auto& s : j["seconds_at_scale"]) {
         EXPECT_GE(s["scale"].get<double>(), game::ResolutionController::Options{}.min_scale - 1e-6);
@@ -457,6 +463,8 @@ TEST_F(Cli, TimedemoRefusesBadInputClearly) {
         {replay.string() + " --size 640x360x2", 2, "--size"},
         {replay.string() + " --quality ultra", 2, "--quality must be low, medium, high or auto"},
         {replay.string() + " --json", 2, "--json needs a value"},
+        {replay.string() + " --scale 2", 2, "--scale takes a render scale from 0.25 to 1"},
+        {replay.string() + " --scale half", 2, "--scale takes a render scale from 0.25 to 1"},
     };
     for (const Case& c : cases) {
         CommandResult r = run("timedemo " + c.args, kNoDisplay);

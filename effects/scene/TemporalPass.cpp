@@ -50,7 +50,7 @@ void TemporalPass::render(const FrameContext& frame) {
                                   ? frame.poses.car
                                   : frame.poses.boat;
     const glm::mat4 vehicle = ridden.matrix();
-    const glm::mat4 last_vehicle = history && has_vehicle_ ? last_vehicle_ : vehicle;
+    const glm::mat4 last_vehicle = history ? last_vehicle_ : vehicle;
 
     t.history_fbo().bind();
     glViewport(0, 0, t.width(), t.height());
@@ -60,8 +60,8 @@ void TemporalPass::render(const FrameContext& frame) {
     program_.set("u_history", 1);
     program_.set("u_depth", 2);
     // From this frame's window position and depth (drawn jittered) to where that point
-    // was in the last frame's unjittered view: the world is taken as still, what moves is
-    // left to the clamp.
+    // was in the last frame's unjittered view: as a still part of the world, or as a
+    // point on the vehicle; what else moves (thrown objects, water) is left to the clamp.
     program_.set("u_reproject", last_view_proj_ * camera.inv_view_proj);
     program_.set("u_reproject_vehicle", last_view_proj_ * last_vehicle * glm::inverse(vehicle) * camera.inv_view_proj);
     program_.set("u_current_weight", history ? current_weight_ : 1.0f);
@@ -73,7 +73,6 @@ void TemporalPass::render(const FrameContext& frame) {
 
     last_view_proj_ = unjittered;
     last_vehicle_ = vehicle;
-    has_vehicle_ = true;
     has_history_ = true;
     history_generation_ = t.generation();
 }

@@ -18,9 +18,9 @@ namespace effects {
 // has two candidates for where it was: the world's (the world taken as still) and the
 // vehicle's nearest the eye (through its last and this pose, so the car's cabin in the
 // driver's view, or the car ahead of the chase camera, keeps its history); the one
-// nearer this frame's colour is taken. Over a few
-// frames an edge's pixels take its coverage instead of all-or-nothing: the scene is
-// anti-aliased before the upscale enlarges it, and a small scene's stairs do not show.
+// nearer this frame's colour is taken. Over a few frames an edge's pixels take its
+// coverage instead of all-or-nothing: the scene is anti-aliased before the upscale
+// enlarges it, and a small scene's stairs do not show.
 // The neighbourhood is read as five texels (the pixel and the four beside it): on
 // llvmpipe every fetch costs about as much as the arithmetic of a whole pixel.
 class TemporalPass final : public Pass {
@@ -37,7 +37,6 @@ private:
     uint64_t history_generation_ = 0;  // SceneTargets' generation the history was drawn at
     glm::mat4 last_view_proj_{1.0f};   // the last frame's, without its jitter
     glm::mat4 last_vehicle_{1.0f};     // the last frame's pose of the vehicle nearest the eye
-    bool has_vehicle_ = false;
 };
 
 // The sub-pixel offset (in the scene's pixels, each axis in [-0.5, 0.5)) of the

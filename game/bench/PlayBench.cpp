@@ -1,6 +1,7 @@
 #include "game/bench/PlayBench.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -65,8 +66,10 @@ void bench_play(BenchReport& report, bool quick) {
                 for (const auto& [scale, secs] : s.seconds_at_scale) scale_time += double(scale) * secs;
                 report.add({"play", label + ": time-weighted render scale", s.wall_s > 0 ? scale_time / s.wall_s : 0.0,
                             "x", 0.5, true});
+                // Scales are steps of 0.05 held as floats: 0.35f reads 0.34999... as a double.
                 const float lowest = s.seconds_at_scale.empty() ? 0.0f : s.seconds_at_scale.front().first;
-                report.add({"play", label + ": lowest render scale", double(lowest), "x", 0.35, true});
+                report.add({"play", label + ": lowest render scale", std::round(double(lowest) * 100.0) / 100.0, "x",
+                            0.35, true});
                 // What is drawn at the output's size: the upscale (or the copy of the
                 // resolved frame) and the UI.
                 double output_ms = 0.0;
