@@ -290,6 +290,53 @@ TEST(SplashSheetMesh, OnlyTrianglesWithThreeAirborneCornersWithUpwardNormalsAtRe
     EXPECT_LT(mesh.vertices[size_t(2 * n + 2)].cover, 1.0f) << "the tear's edge runs past the block's centre";
 }
 
+// A sheet that says where it rests has its jet (vertices risen straight up from their
+// rest) drawn as a column pulled in towards its centre and standing in the water; a
+// crown's vertices (flown outward as they rose) are drawn where they are.
+TEST(SplashSheetMesh, TheJetIsDrawnAsAColumnAndTheCrownWhereItIs) {
+    const int n = 9;
+    const float d = 0.04f;
+    const glm::vec2 centre{1.0f, 2.0f};
+    std::vector<glm::vec3> pos;
+    std::vector<uint8_t> air(size_t(n * n), 0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::vec2 rest = centre + glm::vec2(float(i - n / 2), float(j - n / 2)) * d;
+            pos.push_back({rest.x, -0.03f, rest.y});
+        }
+    auto at = [&](int i, int j) { return size_t(j * n + i); };
+    // The jet: the central 3x3 risen straight up, a dome 1 m high.
+    for (int j = 3; j <= 5; ++j)
+        for (int i = 3; i <= 5; ++i) {
+            air[at(i, j)] = 1;
+            pos[at(i, j)].y = (i == 4 && j == 4) ? 1.0f : 0.8f;
+        }
+    effects::SplashSheetMesh mesh;
+    mesh.append({n, d, pos, air, centre}, 12.0f, 0.0f);
+    const glm::vec3 corner = mesh.vertices[at(5, 5)].position;
+    EXPECT_NEAR(corner.x - centre.x, effects::SplashSheetMesh::kJetSqueeze * d, 1e-5f) << "pulled in to the axis";
+    EXPECT_NEAR(corner.z - centre.y, effects::SplashSheetMesh::kJetSqueeze * d, 1e-5f);
+    EXPECT_FLOAT_EQ(mesh.vertices[at(4, 4)].position.y, 1.0f) << "its top stays where the sim has it";
+    ASSERT_GT(mesh.vertices.size(), size_t(n * n)) << "the column's side goes down into the water";
+    for (size_t k = size_t(n * n); k < mesh.vertices.size(); ++k)
+        EXPECT_LT(mesh.vertices[k].position.y, 0.0f) << "foot vertex " << k;
+    EXPECT_FLOAT_EQ(mesh.vertices[at(3, 4)].cover, 1.0f) << "held by its side, the outline is no free rim";
+
+    // The same vertices flown out as far as they rose: a crown, drawn as the sim has it.
+    for (int j = 3; j <= 5; ++j)
+        for (int i = 3; i <= 5; ++i) pos[at(i, j)].x += 0.8f;
+    mesh.clear();
+    mesh.append({n, d, pos, air, centre}, 12.0f, 0.0f);
+    ASSERT_EQ(mesh.vertices.size(), size_t(n * n));
+    EXPECT_EQ(mesh.vertices[at(5, 5)].position, pos[at(5, 5)]);
+    // Without a centre nothing is a jet.
+    for (int j = 3; j <= 5; ++j)
+        for (int i = 3; i <= 5; ++i) pos[at(i, j)].x -= 0.8f;
+    mesh.clear();
+    mesh.append({n, d, pos, air}, 12.0f, 0.0f);
+    EXPECT_EQ(mesh.vertices[at(5, 5)].position, pos[at(5, 5)]);
+}
+
 TEST_F(WaterRenderTest, WithoutAGridTheFlatSeaLiesAtSeaLevel) {
     WaterView flat;
     render(&flat);
