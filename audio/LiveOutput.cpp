@@ -11,7 +11,7 @@ namespace audio {
 
 namespace {
 constexpr int kBlockFrames = 512;  // 10.7 ms
-constexpr int kQueued = 8;         // 85 ms ahead of the device: a busy machine may not run the thread for a while
+constexpr int kQueued = 12;        // 128 ms ahead of the device: a busy machine may not run the thread for a while
 }  // namespace
 
 std::unique_ptr<LiveOutput> LiveOutput::open(Mixer& mixer, std::string& why) {

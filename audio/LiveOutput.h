@@ -34,7 +34,7 @@ private:
     void* device_;   // ALCdevice
     void* context_;  // ALCcontext
     unsigned source_ = 0;
-    unsigned buffers_[8] = {};
+    unsigned buffers_[12] = {};
     std::string device_name_;
     std::atomic<bool> paused_{false}, stop_{false};
     std::atomic<int> underruns_{0};

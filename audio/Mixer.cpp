@@ -136,14 +136,9 @@ void Mixer::render_block(float* out, int frames) {
         const float bus = bus_gain_[size_t(int(c.voice->bus()))].value();
         for (int k = 0; k < frames; ++k) {
             float x = scratch_[size_t(k)];
-            const float m = c.muffle.next();
-            if (m > 0.0f || c.muffle.value() > 0.0f) {
-                const float walled = c.wall.lowpass(x) * kWallGain;
-                x += (walled - x) * m;
-            } else {
-                c.wall.lowpass(x);  // kept running, so going into the cabin does not click
-            }
-            x *= bus;
+            // The wall's filter always runs, so stepping into the cabin does not click.
+            const float walled = c.wall.lowpass(x) * kWallGain;
+            x = (x + (walled - x) * c.muffle.next()) * bus;
             out[2 * k] += x * c.left.next();
             out[2 * k + 1] += x * c.right.next();
         }

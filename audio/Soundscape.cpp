@@ -9,6 +9,7 @@
 #include "audio/models/Cue.h"
 #include "audio/models/Splash.h"
 #include "audio/models/Strike.h"
+#include "sim/fluid/FluidTank.h"
 #include "sim/player/CameraRig.h"
 #include "sim/player/Player.h"
 #include "sim/rain/RainSim.h"
@@ -71,6 +72,7 @@ Soundscape::Soundscape(Mixer& mixer)
       rain_bed_(Bus::Ambience, NoiseBand{700.0f, 11000.0f, 0.0f, 0.0f, 0.55f, 41}),
       wind_(Bus::Ambience, NoiseBand{120.0f, 900.0f, 0.12f, 0.6f, 0.45f, 43}),
       sea_(Bus::Ambience, NoiseBand{60.0f, 700.0f, 0.09f, 0.7f, 0.55f, 47}),
+      slosh_(Bus::Effects, NoiseBand{150.0f, 1400.0f, 1.3f, 0.6f, 0.6f, 67}),
       sea_rain_(Bus::Ambience, 53),
       glass_(59),
       wipers_(61) {
@@ -79,13 +81,13 @@ Soundscape::Soundscape(Mixer& mixer)
     sea_.place = bed(true);
     sea_rain_.place = bed(true);
     for (Voice* v : std::initializer_list<Voice*>{&engine_, &boat_motor_, &tyres_, &spray_, &rain_bed_, &wind_, &sea_,
-                                                   &sea_rain_, &glass_, &wipers_})
+                                                   &slosh_, &sea_rain_, &glass_, &wipers_})
         mixer_.add(*v);
 }
 
 Soundscape::~Soundscape() {
     for (Voice* v : std::initializer_list<Voice*>{&engine_, &boat_motor_, &tyres_, &spray_, &rain_bed_, &wind_, &sea_,
-                                                   &sea_rain_, &glass_, &wipers_})
+                                                   &slosh_, &sea_rain_, &glass_, &wipers_})
         mixer_.remove(*v);
     for (auto& [key, v] : shot_voices_) mixer_.remove(*v);
     for (auto& [ticks, v] : fading_shots_) mixer_.remove(*v);
@@ -98,6 +100,7 @@ void Soundscape::after_tick(const sim::World& world, const Listener& listener) {
     wipers(world);
     shots(world);
     events(world);
+    tank(world);
     mixer_.update_placement(listener, kTick_s);
     first_tick_ = false;
 }
@@ -242,6 +245,34 @@ void Soundscape::shots(const sim::World& world) {
     for (auto& [ticks, v] : fading_shots_)
         if (--ticks <= 0) mixer_.remove(*v);
     std::erase_if(fading_shots_, [](const auto& f) { return f.first <= 0; });
+}
+
+void Soundscape::tank(const sim::World& world) {
+    const sim::FluidTank* tank = world.find<sim::FluidTank>();
+    if (!tank) return;
+    const glm::vec3 size = tank->inner_size();
+    const glm::vec3 centre = glm::vec3(tank->tank_to_world() * glm::vec4(0.5f * size, 1.0f));
+    // The liquid sloshing: a watery band by its particles' mean speed (asleep: still).
+    float speed = 0.0f;
+    if (!tank->asleep()) {
+        const std::vector<glm::vec3>& v = tank->fluid().velocities();
+        for (const glm::vec3& u : v) speed += std::sqrt(glm::dot(u, u));
+        speed /= float(std::max<size_t>(v.size(), 1));
+    }
+    slosh_.set(std::min(1.0f, speed / 0.8f));
+    slosh_.place = at(centre, 3.0f);
+    // Something dropped in: a small splash inside and the glass knocked.
+    const int inside = tank->objects_inside();
+    if (inside > tank_objects_) {
+        play_splash(mixer_, SplashCause{1.0f, 4.0f, 0.15f, false}, centre, next_seed(), 0);
+        StrikeSound glass;
+        glass.modes[0] = {620.0f, 0.05f, 0.25f};
+        glass.modes[1] = {1630.0f, 0.03f, 0.12f};
+        glass.seed = next_seed();
+        strike(mixer_, glass, at(centre, 3.0f));
+        ++state_.events;
+    }
+    tank_objects_ = inside;
 }
 
 void Soundscape::events(const sim::World& world) {

@@ -55,12 +55,13 @@ private:
     void wipers(const sim::World& world);
     void shots(const sim::World& world);
     void events(const sim::World& world);
+    void tank(const sim::World& world);
     uint32_t next_seed() { return ++seeds_ * 2654435761u; }
 
     Mixer& mixer_;
     Gearbox gearbox_;
     EngineVoice engine_, boat_motor_;
-    NoiseBed tyres_, spray_, rain_bed_, wind_, sea_;
+    NoiseBed tyres_, spray_, rain_bed_, wind_, sea_, slosh_;
     BubbleVoice sea_rain_;
     GlassDropsVoice glass_;
     WipersVoice wipers_;
@@ -69,6 +70,7 @@ private:
     float boat_rpm_ = 1100.0f;
     float boat_pitch_ = 0.0f, boat_pitch_rate_ = 0.0f;
     float blade_angle_ = 0.0f, blade_turning_ = 0.0f;
+    int tank_objects_ = 0;
     bool first_tick_ = true;
     uint64_t last_thud_tick_ = 0;
     uint32_t seeds_ = 0;

@@ -6,6 +6,7 @@
 
 #include "AudioAnalysis.h"
 #include "AudioReplays.h"
+#include "audio/models/NoiseBed.h"
 #include "game/replay/ReplayCheck.h"
 #include "sim/player/Player.h"
 
@@ -20,6 +21,29 @@ TEST(AudioRender, TwoRendersOfAReplayAreBitIdentical) {
     ASSERT_EQ(a.samples.size(), b.samples.size());
     EXPECT_EQ(std::memcmp(a.samples.data(), b.samples.data(), a.samples.size() * sizeof(float)), 0);
     EXPECT_GT(power(mono(a.samples), 0, a.samples.size() / 2), 1e-6) << "the render is silent";
+}
+
+// The spatialisation is the mixer's: OpenAL, its settings pinned, must play the mix as it is.
+TEST(AudioRender, OpenAlsLoopbackPassesTheMixThroughUnchanged) {
+    game::OfflineSound pin(game::CameraTrack{});  // pins OpenAL's settings before it starts, like a render
+    audio::Mixer through, direct;
+    audio::NoiseBed a(audio::Bus::Effects, audio::NoiseBand{}), b(audio::Bus::Effects, audio::NoiseBand{});
+    a.set(1.0f);
+    b.set(1.0f);
+    through.add(a);
+    direct.add(b);
+    through.update_placement({}, 1.0f / 60.0f);
+    direct.update_placement({}, 1.0f / 60.0f);
+    std::string why;
+    auto loopback = audio::LoopbackRender::open(through, why);
+    ASSERT_TRUE(loopback) << why;
+    std::vector<float> x(2 * kTickFrames), y(2 * kTickFrames);
+    for (int t = 0; t < 60; ++t) {
+        loopback->render(x.data(), kTickFrames);
+        direct.render(y.data(), kTickFrames);
+        ASSERT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(float)), 0) << "tick " << t;
+    }
+    EXPECT_GT(power(x, 0, x.size()), 1e-6);
 }
 
 TEST(AudioRender, TheSimHashesTheSameWithSoundAsRecorded) {
