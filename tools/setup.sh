@@ -9,7 +9,7 @@ packages=(
   build-essential cmake pkg-config git
   libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev libopenexr-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev
-  libgtest-dev libbenchmark-dev libimgui-dev libstb-dev
+  libgtest-dev libbenchmark-dev libimgui-dev libstb-dev libzstd-dev
   libopenal-dev libebur128-dev sox
   xvfb xauth
   glslang-tools

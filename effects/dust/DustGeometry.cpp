@@ -152,10 +152,15 @@ void DustGeometry::rebuild(const sim::DustField& field) {
     fin_vao_.element_buffer(fin_indices_);
 }
 
-void DustGeometry::update(const sim::DustField& field, const sim::DustDesc& dust, const SceneDesc& scene) {
+void DustGeometry::update(const sim::DustField& field, uint64_t restore_generation, const sim::DustDesc& dust,
+                          const SceneDesc& scene) {
     if (&field != field_) {
         field_ = &field;
         upload_static(field, dust, scene);
+        revision_ = ~0ull;
+    }
+    if (restore_generation != restore_generation_) {
+        restore_generation_ = restore_generation;
         revision_ = ~0ull;
     }
     if (field.revision() != revision_) {

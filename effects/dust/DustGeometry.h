@@ -37,7 +37,10 @@ public:
 
     // Uploads what changed since the last call; cheap when nothing did. dust is the
     // level's (the field keeps no triangles of its own, only their tessellation).
-    void update(const sim::DustField& field, const sim::DustDesc& dust, const SceneDesc& scene);
+    // `restore_generation` is the world's (World::restore_generation): after a snapshot
+    // is restored the field's revision may name other amounts, so they are re-uploaded.
+    void update(const sim::DustField& field, uint64_t restore_generation, const sim::DustDesc& dust,
+                const SceneDesc& scene);
 
     const gl::Buffer& vertices() const { return vertices_; }  // position, normal per vertex
     const gl::Buffer& vertex_light() const { return vertex_light_; }  // two vec4 per vertex
@@ -65,6 +68,7 @@ private:
 
     const sim::DustField* field_ = nullptr;
     uint64_t revision_ = ~0ull;
+    uint64_t restore_generation_ = 0;
     gl::Buffer vertices_, vertex_light_, sky_exposure_, lit_vertices_, amounts_, shell_indices_, fin_vertices_, fin_indices_;
     gl::VertexArray shell_vao_, fin_vao_;
     // The coarse level's triangles, as the sim's vertex numbers, and where each prop's start.

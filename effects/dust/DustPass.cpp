@@ -66,7 +66,7 @@ const FibreTexture& DustPass::fibres_for(sim::DustKind kind, const FibreDirectio
 void DustPass::render(const FrameContext& frame) {
     const sim::DustField* field = frame.world.find<sim::DustField>();
     if (!field || field->surface().props().empty()) return;
-    geometry_.update(*field, frame.world.level().dust, frame.resources.desc);
+    geometry_.update(*field, frame.world.restore_generation(), frame.world.level().dust, frame.resources.desc);
     if (geometry_.dusty_triangles() == 0) return;
 
     const SceneTargets& t = frame.targets;

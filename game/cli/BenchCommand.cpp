@@ -17,6 +17,7 @@
 #include "game/bench/FluidBench.h"
 #include "game/bench/DustBench.h"
 #include "game/bench/PlayBench.h"
+#include "game/bench/ReplayBench.h"
 #include "game/bench/SubsystemTimer.h"
 #include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
@@ -141,6 +142,8 @@ int bench_command(const std::vector<std::string>& argv) {
     if (runs("replay")) {
         std::cerr << "bench: replay check\n";
         bench_replay_check(report, quick ? 300 : 1800);
+        std::cerr << "bench: replay seek\n";
+        bench_replay_seek(report, quick);
     }
     if (runs("water")) {
         std::cerr << "bench: water\n";

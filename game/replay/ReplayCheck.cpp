@@ -32,6 +32,10 @@ std::optional<std::string> replay_mismatch(const Replay& replay, const sim::Worl
 
 std::optional<Divergence> ReplayChecker::after_step(const sim::World& world) {
     const uint64_t tick = world.tick();
+    if (world.restore_generation() != restore_generation_) {
+        restore_generation_ = world.restore_generation();
+        next_chunk_ = 0;  // the world may have gone back
+    }
     const auto& world_hashes = replay_.tick_world_hashes;
     if (tick == 0 || tick > world_hashes.size()) return std::nullopt;
     ++checked_;

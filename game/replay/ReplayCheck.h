@@ -25,7 +25,8 @@ public:
     explicit ReplayChecker(const Replay& replay) : replay_(replay) {}
     // Call after each world.step(): compares the world hash stored for world.tick() and, at a
     // chunk's last tick, the full subsystem hashes. Ticks the replay holds nothing for (0, or
-    // past its end) are not checked.
+    // past its end) are not checked. A world restored from a snapshot since the last call
+    // (World::restore_generation) is followed from its new tick on.
     std::optional<Divergence> after_step(const sim::World& world);
     size_t hashes_checked() const { return checked_; }  // ticks checked so far
 
@@ -36,6 +37,7 @@ private:
 
     const Replay& replay_;
     size_t next_chunk_ = 0;  // first entry of replay_.hashes not yet passed
+    uint64_t restore_generation_ = 0;
     size_t checked_ = 0;
 };
 

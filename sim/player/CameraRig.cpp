@@ -18,6 +18,20 @@ constexpr float kMovingBackwards_mps = 0.5f;
 
 CameraRig::CameraRig(CameraRigParams params) : p_(params) {}
 
+CameraView CameraRig::driver_view(const Pose& pose, bool in_car, float fov_y_deg) {
+    glm::mat4 m = pose.matrix();
+    // The driver's eyes: behind the windshield, above the seat, a hand below the roof
+    // lining so that the glass, not the roof, fills the view.
+    glm::vec3 seat = in_car ? glm::vec3(-0.45f, 1.2f, 0.0f) : glm::vec3(-0.6f, 1.9f, 0.0f);
+    glm::vec3 look = seat + glm::vec3(10.0f, in_car ? -0.2f : -0.6f, 0.0f);
+    CameraView v;
+    v.eye = glm::vec3(m * glm::vec4(seat, 1.0f));
+    v.target = glm::vec3(m * glm::vec4(look, 1.0f));
+    v.up = glm::vec3(m * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+    v.fov_y_deg = fov_y_deg;
+    return v;
+}
+
 void CameraRig::connect(const SubsystemLinks& links) {
     player_ = &links.need<Player>();
     car_ = &links.need<Car>();
@@ -59,15 +73,7 @@ void CameraRig::step(StepContext& ctx) {
     chase_eye_.y = std::max(chase_eye_.y, floor);
 
     if (player.view() == ViewMode::Driver) {
-        glm::mat4 m = pose.matrix();
-        // The driver's eyes: behind the windshield, above the seat, a hand below the roof
-        // lining so that the glass, not the roof, fills the view.
-        glm::vec3 seat = in_car ? glm::vec3(-0.45f, 1.2f, 0.0f) : glm::vec3(-0.6f, 1.9f, 0.0f);
-        glm::vec3 look = seat + glm::vec3(10.0f, in_car ? -0.2f : -0.6f, 0.0f);
-        view_.eye = glm::vec3(m * glm::vec4(seat, 1.0f));
-        view_.target = glm::vec3(m * glm::vec4(look, 1.0f));
-        view_.up = glm::vec3(m * glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
-        view_.fov_y_deg = p_.driver_fov_deg;
+        view_ = driver_view(pose, in_car, p_.driver_fov_deg);
     } else {
         view_.eye = chase_eye_;
         view_.target = chase_target_;

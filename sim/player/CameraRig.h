@@ -4,6 +4,8 @@
 // replays reproduce every frame exactly.
 #include <glm/vec3.hpp>
 
+#include "sim/core/Pose.h"
+
 #include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
@@ -53,6 +55,9 @@ public:
     }
 
     const CameraView& view() const { return view_; }
+    const CameraRigParams& params() const { return p_; }
+    // From the driver's seat of the car (or the boat's helm) at `pose`: the driver view.
+    static CameraView driver_view(const Pose& pose, bool in_car, float fov_y_deg);
 
 private:
     CameraRigParams p_;
