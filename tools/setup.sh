@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev libimgui-dev libstb-dev
   xvfb xauth
   glslang-tools
+  help2man file  # the man page and cpack's scan of the programs (packaging/)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -16,6 +16,7 @@
 #include "game/cli/ExitCode.h"
 #include "game/cli/Progress.h"
 #include "game/cli/QualityOption.h"
+#include "game/cli/SettingsOption.h"
 #include "game/level/LevelMemory.h"
 #include "game/platform/HeadlessContext.h"
 #include "game/play/PlayMode.h"
@@ -53,7 +54,7 @@ struct FrameOutcome {
 }  // namespace
 
 int replay_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality"},
+    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality", "--settings"},
               {"--headless", "--check", "--update-goldens", "--require-goldens", "--strict", "--exr"});
     if (args.positional().size() != 1) throw UsageError("replay takes one replay file");
     const fs::path path = args.positional()[0];
@@ -81,7 +82,7 @@ int replay_command(const std::vector<std::string>& argv) {
                              std::to_string(total) + " ticks)");
 
     if (!args.flag("--headless")) {
-        if (display_available()) return play_replay_in_window(replay, session, quality);
+        if (display_available()) return play_replay_in_window(replay, session, player_settings(args));
         std::cerr << "no display: replaying headless\n";
     }
 

@@ -25,9 +25,25 @@ std::vector<std::string> demo_replay_args(const fs::path& replay, uint32_t ticks
     return {replay.string(), "--headless", "--frames", frames, "--out", out_dir.string()};
 }
 
+namespace {
+
+Window::Options window_options(const Settings& settings, std::string title) {
+    return Window::Options{.width = settings.window.width,
+                           .height = settings.window.height,
+                           .title = std::move(title),
+                           .vsync = settings.vsync,
+                           .x = settings.window.x,
+                           .y = settings.window.y,
+                           .fullscreen = settings.window.fullscreen};
+}
+
+}  // namespace
+
 int play_in_window(GameSession& session, const PlayOptions& options) {
-    WindowScreen screen(Window::Options{1280, 720, "Spindrift", true});
-    PlayLoop loop(session, screen, LoopOptions{.quality = options.quality});
+    const Settings& settings = options.player.settings;
+    WindowScreen screen(window_options(settings, "Spindrift"));
+    PlayLoop loop(session, screen,
+                  LoopOptions{.quality = settings.quality, .settings = settings, .settings_file = options.player.file.get()});
     std::optional<ReplayWriter> writer;
     if (options.record) {
         writer.emplace(ReplayWriter::create(*options.record, replay_header_for(session, 480, 270, {})));
@@ -48,6 +64,15 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
     };
     hooks.status = [] { return std::string(); };
     hooks.recording = [&] { return recording; };
+    hooks.restart = [&] {
+        // The recording is of one course from its start: it ends where the course did.
+        if (recording) {
+            writer->finish();
+            recording = false;
+            std::cout << "recording stopped at the restart" << std::endl;
+        }
+        session.world = std::make_unique<sim::World>(session.level.sim, sim::WorldOptions{options.threads});
+    };
     loop.run(hooks);
     if (recording) writer->finish();
     if (writer)
@@ -56,11 +81,13 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
     return kExitOk;
 }
 
-int play_replay_in_window(const Replay& replay, GameSession& session, QualityChoice quality) {
-    WindowScreen screen(Window::Options{1280, 720, "Spindrift - replay", true});
+int play_replay_in_window(const Replay& replay, GameSession& session, const PlayerSettings& player) {
+    WindowScreen screen(window_options(player.settings, "Spindrift - replay"));
     PlayLoop loop(session, screen,
-                  LoopOptions{.quality = quality,
-                              .cameras = CameraTrack(replay.header.camera_shots, replay.header.tick_rate_hz)});
+                  LoopOptions{.quality = player.settings.quality,
+                              .cameras = CameraTrack(replay.header.camera_shots, replay.header.tick_rate_hz),
+                              .settings = player.settings,
+                              .settings_file = player.file.get()});
     ReplayChecker checker(replay);
     std::optional<Divergence> divergence;
     size_t next = 0;
@@ -75,7 +102,7 @@ int play_replay_in_window(const Replay& replay, GameSession& session, QualityCho
     };
     hooks.status = [&] {
         std::string s = "replay " + std::to_string(next) + "/" + std::to_string(replay.inputs.size());
-        if (next >= replay.inputs.size()) s += " ended (Esc quits)";
+        if (next >= replay.inputs.size()) s += " ended (Esc: menu, Quit)";
         if (divergence) s += "  DESYNC at tick " + std::to_string(divergence->tick);
         return s;
     };
