@@ -176,7 +176,8 @@ PauseMenu::Choice PauseMenu::draw(Settings& settings, const Context& context) {
     if (focus_first_) ImGui::SetNextWindowFocus();
     const ScaledFont scaled(scale);
     if (ImGui::Begin(title, nullptr, flags)) {
-        if (focus_first_) {
+        // The Controls page focuses its first key itself (after its help line).
+        if (focus_first_ && page_ != Page::Controls) {
             ImGui::SetKeyboardFocusHere();
             focus_first_ = false;
         }
@@ -252,11 +253,11 @@ void PauseMenu::draw_settings(Settings& s, const Context& context) {
 
 void PauseMenu::draw_controls(Settings& s) {
     ImGui::TextWrapped("Click a key (or select it and press Enter), then press the new key. Esc cancels.");
-    const ImGuiTableFlags table_flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                        ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
-    const float rows_height = ImGui::GetMainViewport()->WorkSize.y * 0.6f;
-    if (ImGui::BeginTable("controls", 4, table_flags, ImVec2(0.0f, rows_height))) {
-        ImGui::TableSetupScrollFreeze(0, 1);
+    // No scrolling of its own: the table's child window would keep keyboard and gamepad
+    // navigation out (ImGui 1.86); the menu's window scrolls instead.
+    const ImGuiTableFlags table_flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+    if (ImGui::BeginTable("controls", 4, table_flags)) {
         ImGui::TableSetupColumn("Action", 0, 2.2f);
         ImGui::TableSetupColumn("Key", 0, 1.2f);
         ImGui::TableSetupColumn("Other key", 0, 1.2f);
@@ -281,6 +282,10 @@ void PauseMenu::draw_controls(Settings& s) {
                 const int key = s.keys.keys(a.action)[size_t(slot)];
                 const bool waiting = capture_ && capture_->action == a.action && capture_->slot == slot;
                 const std::string text = waiting ? "press a key..." : key ? key_name(key) : "-";
+                if (focus_first_) {
+                    ImGui::SetKeyboardFocusHere();
+                    focus_first_ = false;
+                }
                 if (ImGui::Button(text.c_str(), ImVec2(-1.0f, 0.0f)) && !capture_) {
                     capture_ = Capture{a.action, slot};
                     message_.clear();
