@@ -2,6 +2,7 @@
 // what a bad file falls back to, the command line's changes kept out of the file, and
 // key bindings that never give one key two actions.
 #include "game/play/PauseMenu.h"
+#include "game/play/ResolutionController.h"
 #include "game/settings/KeyBindings.h"
 #include "game/settings/KeyNames.h"
 #include "game/settings/Settings.h"
@@ -80,6 +81,12 @@ TEST(Settings, DefaultsAndChangesSurviveTheirJson) {
         EXPECT_TRUE(problems.empty()) << problems.front();
     }
     EXPECT_FALSE(changed() == Settings{});
+}
+
+TEST(Settings, AutosDefaultRangeIsTheResolutionControllers) {
+    const game::ResolutionController::Options controller;
+    EXPECT_EQ(Settings{}.auto_min_scale, controller.min_scale);
+    EXPECT_EQ(Settings{}.auto_max_scale, controller.max_scale);
 }
 
 TEST(Settings, AMissingSettingKeepsItsDefault) {

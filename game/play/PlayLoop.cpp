@@ -160,7 +160,9 @@ void PlayLoop::run(const LoopHooks& hooks) {
         idle_frame_shown = idle && !menu_.is_open();  // the open menu answers every frame
         if (first_frame) {
             last = shown;
-            if (!settings_.menu_seen && hint_until_ == Clock::time_point{}) hint_until_ = shown + kHintShownFor;
+            // A player's run (one with a settings file) shows the hint; a timedemo does not.
+            if (options_.settings_file && !settings_.menu_seen && hint_until_ == Clock::time_point{})
+                hint_until_ = shown + kHintShownFor;
         }
         if (last_shown != Clock::time_point{} && !idle && !first_frame) {
             record.frame_ms = std::chrono::duration<double, std::milli>(shown - last_shown).count();
