@@ -85,7 +85,8 @@ void PlayLoop::run(const LoopHooks& hooks) {
     FixedStepClock clock(sim::kTickRateHz);
     const bool keyboard_drives = !hooks.next_input;
     if (keyboard_drives) queue_start_presses();
-    const std::optional<std::array<int, 4>> placement_at_start = screen_.windowed_placement();
+    // Where the window is once shown (a window manager may place it after it is made).
+    std::optional<std::array<int, 4>> placement_at_start;
     bool input_ended = false;
     bool idle_frame_shown = false;
     // The first frame compiles llvmpipe's shader variants: real time, frame times and
@@ -160,6 +161,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
         idle_frame_shown = idle && !menu_.is_open();  // the open menu answers every frame
         if (first_frame) {
             last = shown;
+            if (!placement_at_start) placement_at_start = screen_.windowed_placement();
             // A player's run (one with a settings file) shows the hint; a timedemo does not.
             if (options_.settings_file && !settings_.menu_seen && hint_until_ == Clock::time_point{})
                 hint_until_ = shown + kHintShownFor;
@@ -180,7 +182,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
     }
     // A window moved or resized by the player is where the next start puts it.
     const std::optional<std::array<int, 4>> placement = screen_.windowed_placement();
-    if (placement && placement != placement_at_start) {
+    if (placement && placement_at_start && placement != placement_at_start) {
         Settings moved = settings_;
         moved.window.x = (*placement)[0];
         moved.window.y = (*placement)[1];
