@@ -17,6 +17,7 @@
 #include "effects/scene/SceneCopyPass.h"
 #include "effects/scene/ShadowPass.h"
 #include "effects/scene/SkyOcclusionPass.h"
+#include "effects/scene/TemporalPass.h"
 #include "effects/scene/TonemapPass.h"
 #include "effects/scene/UpscalePass.h"
 #include "effects/water/WaterPass.h"
@@ -78,6 +79,10 @@ const std::vector<PassEntry>& pass_table() {
         {"tonemap", {.reads = {SceneColour}, .writes = {Display}}, make<TonemapPass>},
         // At the scene's size: before the upscale, fewer pixels.
         {"fxaa", {.onto = {{Display, "anti-aliased when anti-aliasing is on"}}}, make<FxaaPass>},
+        // At the scene's size, over the last frames (auto): the edges' coverage before the upscale.
+        {"temporal",
+         {.reads = {Depth}, .onto = {{Display, "resolved with the last frames when temporal upsampling is on"}}},
+         make<TemporalPass>},
         // To the output's size (nothing at scale 1, where the display is the output); the HUD goes on after.
         {"upscale", {.reads = {Display}, .writes = {Output}}, make<UpscalePass>},
     };

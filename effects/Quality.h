@@ -26,6 +26,11 @@ struct QualitySettings {
     // FXAA over the tone-mapped frame, off in every preset: on llvmpipe it costs about a
     // quarter of a high frame (docs/PERFORMANCE.md), so the player turns it on (F3).
     bool antialias = false;
+    // Temporal upsampling (TemporalPass): the projection jittered by a sub-pixel offset
+    // each frame and the tone-mapped frame resolved against the last one reprojected, so
+    // a scene drawn small is anti-aliased before the upscale. No preset turns it on
+    // (the goldens are single frames); the game does on `auto` (Renderer::set_temporal).
+    bool temporal = false;
     bool operator==(const QualitySettings&) const = default;
 };
 

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "effects/gl/DebugGroup.h"
+#include "effects/scene/TemporalPass.h"
 
 namespace effects {
 
@@ -53,6 +54,10 @@ FrameContext Renderer::prepare(const sim::World& world, RenderOutput output, con
                                const FrameRequest& request) {
     size_scene(output.width, output.height);
     camera_ = request.camera ? *request.camera : make_camera(poses.camera, float(output.width) / float(output.height));
+    if (resources_.quality.temporal) {
+        const glm::vec2 px = temporal_jitter_px(temporal_frame_++);
+        camera_ = jittered(camera_, 2.0f * px / glm::vec2(targets_.width(), targets_.height()));
+    }
     gather_frame_data(world,
                       {.camera = camera_,
                        .sun_dir = sun_dir_,
@@ -76,15 +81,23 @@ void Renderer::render(const sim::World& world, RenderOutput output, const FrameP
                       const FrameRequest& request) {
     const FrameContext frame = prepare(world, output, poses, request);
     timer_->frame_begin();
+    pass_draws_.clear();
     try {
         for (size_t i = 0; i < passes_.size(); ++i) {
             const size_t index = pass_indices_[i];
             if (request.skip.contains(index)) continue;
             Pass& pass = *passes_[i];
             gl::DebugGroup group(pass.name());
-            auto timing = timer_->scope(pass.name());
-            if (request.replaced.contains(index)) request.replacement(frame);
-            else pass.render(frame);
+            const gl::DrawCount before = gl::draw_count();
+            {
+                auto timing = timer_->scope(pass.name());
+                if (request.replaced.contains(index)) request.replacement(frame);
+                else pass.render(frame);
+            }
+            const gl::DrawCount after = gl::draw_count();
+            if (after.draws != before.draws)
+                pass_draws_.push_back({std::string(pass.name()),
+                                       {after.draws - before.draws, after.triangles - before.triangles}});
         }
     } catch (...) {
         timer_->frame_end();  // a pass refused its input: the next frame starts afresh

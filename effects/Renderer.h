@@ -3,13 +3,16 @@
 // passes of PassList.cpp it holds, in the table's order, over shared render resources,
 // each in a debug group and timed. The only place passes are run: the game, the
 // replays, the render stage and the benches.
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "effects/Quality.h"
 #include "effects/PassList.h"
+#include "effects/gl/DrawCount.h"
 #include "effects/gl/PassTimer.h"
 #include "effects/scene/Pass.h"
 
@@ -64,6 +67,11 @@ public:
     // Anti-aliasing (FXAA) on or off; the preset's choice until the next set_quality.
     void set_antialiasing(bool on) { resources_.quality.antialias = on; }
     bool antialiasing() const { return resources_.quality.antialias; }
+    // Temporal upsampling (QualitySettings::temporal) on or off; off after set_quality.
+    // Its jitter follows the frames drawn with it on, so a given sequence of frames is
+    // drawn the same every time.
+    void set_temporal(bool on) { resources_.quality.temporal = on; }
+    bool temporal() const { return resources_.quality.temporal; }
     static constexpr float kMinRenderScale = 0.25f;
 
     const SceneTargets& targets() const { return targets_; }
@@ -77,6 +85,12 @@ public:
     void write_normals(bool on) { targets_.write_normals(on); }
     ParamRegistry& params() { return params_; }
     const std::vector<gl::PassTime>& pass_times() const { return timer_->results(); }
+    // The last frame's draw calls and triangles per pass that drew any (gl/DrawCount.h).
+    struct PassDraws {
+        std::string name;
+        gl::DrawCount count;
+    };
+    const std::vector<PassDraws>& pass_draws() const { return pass_draws_; }
     const std::vector<std::unique_ptr<Pass>>& passes() const { return passes_; }
     // Profile mode brackets each pass with glFinish: exact where timer queries read ~0.
     void set_timing(gl::TimingMode mode);
@@ -98,6 +112,8 @@ private:
     glm::mat4 sky_occlusion_view_proj_;  // the props stay put
     Quality quality_ = Quality::High;
     float render_scale_ = 1.0f;
+    std::vector<PassDraws> pass_draws_;
+    uint64_t temporal_frame_ = 0;  // frames drawn with temporal upsampling on: the jitter's index
 };
 
 }  // namespace effects

@@ -1,10 +1,12 @@
-// spindrift-check REPLAY... [--threads N] [--strict]
+// spindrift-check REPLAY... [--threads N] [--strict] [--snapshots N]
 // Replays each recording without rendering and checks the world hash after every tick:
 // `spindrift replay R --headless --check --frames none` in a program with no GL, EGL,
 // window or image library, so that it builds wherever the sim does (another CPU, a
 // compiler the game is not built with). Exit codes as spindrift's: 0 every hash matched,
 // 1 a desync, 2 bad command line, 3 a replay or level that cannot be used, 4 the sim
-// refused this machine's floating-point environment.
+// refused this machine's floating-point environment. --snapshots N also restores a
+// snapshot taken every N ticks into a fresh world and checks it steps on exactly
+// (game/replay/SnapshotCheck.h).
 #include <exception>
 #include <iostream>
 #include <string>
@@ -16,19 +18,23 @@
 #include "game/replay/ObjectiveSummary.h"
 #include "game/replay/ReplayCheck.h"
 #include "game/replay/ReplayReader.h"
+#include "game/replay/SnapshotCheck.h"
 #include "game/session/GameSession.h"
 #include "sim/core/FloatEnvironment.h"
+#include "sim/core/StateArchive.h"
 
 namespace {
 
 constexpr const char* kUsage =
-    "usage: spindrift-check REPLAY... [--threads N] [--strict]\n"
+    "usage: spindrift-check REPLAY... [--threads N] [--strict] [--snapshots N]\n"
     "Replays each file without rendering and checks the world hash after every tick.\n"
     "  --threads N  sim threads (1-64, default 1): the hashes are the same for any count\n"
-    "  --strict     refuse a replay whose recording was cut (its .partial prefix)\n";
+    "  --strict     refuse a replay whose recording was cut (its .partial prefix)\n"
+    "  --snapshots N  also snapshot the world every N ticks (1-100000), restore each into a\n"
+    "               fresh world and check it steps on to the next with the recorded hashes\n";
 
 // One replay: 0 when every hash matched, else the exit code it deserves.
-int check_one(const std::string& path, int threads, bool strict) {
+int check_one(const std::string& path, int threads, bool strict, int snapshots) {
     using namespace game;
     const Replay replay = read_replay(path, ReadOptions{strict});
     if (!replay.complete) std::cerr << path << ": " << replay.cut_note << "\n";
@@ -37,6 +43,18 @@ int check_one(const std::string& path, int threads, bool strict) {
     if (auto why = replay_mismatch(replay, *session.world, session.level.content_hash)) {
         std::cerr << "error: cannot replay " << path << ": " << *why << "\n";
         return kExitBadInput;
+    }
+    if (snapshots > 0) {
+        const SnapshotCheckResult r =
+            check_snapshots(replay, session.world->level(), session.level.content_hash, uint32_t(snapshots), threads);
+        if (r.failure) {
+            std::cout << path << ": SNAPSHOT CHECK FAILED: " << *r.failure << "\n";
+            return kExitCheckFailed;
+        }
+        std::cout << path << ": snapshots every " << snapshots << " ticks: " << r.snapshots
+                  << " restored into fresh worlds, " << r.ticks_restepped
+                  << " ticks stepped on from them, every hash and the next snapshot matched (largest "
+                  << r.largest_bytes / 1024 << " KiB)\n";
     }
     ReplayChecker checker(replay);
     sim::World& world = *session.world;
@@ -68,11 +86,13 @@ int main(int argc, char** argv) {
         }
     int threads = 1;
     bool strict = false;
+    int snapshots = 0;
     std::vector<std::string> files;
     try {
-        Args args(argv_list, {"--threads"}, {"--strict"});
+        Args args(argv_list, {"--threads", "--snapshots"}, {"--strict"});
         threads = args.integer("--threads", 1, 1, 64);
         strict = args.flag("--strict");
+        snapshots = args.integer("--snapshots", 0, 1, 100000);
         files = args.positional();
         if (files.empty()) throw UsageError("name at least one replay file");
     } catch (const UsageError& e) {
@@ -83,10 +103,13 @@ int main(int argc, char** argv) {
     for (const std::string& file : files) {
         int code = kExitOk;
         try {
-            code = check_one(file, threads, strict);
+            code = check_one(file, threads, strict, snapshots);
         } catch (const ReplayError& e) {
             std::cerr << "error: " << e.what() << "\n";
             code = kExitBadInput;
+        } catch (const sim::SnapshotError& e) {
+            std::cerr << "error: " << file << ": " << e.what() << "\n";
+            code = kExitCheckFailed;
         } catch (const LevelError& e) {
             std::cerr << "error: " << e.what() << "\n";
             code = kExitBadInput;

@@ -1,7 +1,9 @@
 // A stone dropped into calm water, close up from the side: the first splash's crown
 // must rise as one sheet (its pixels one connected region, not a scatter of shards),
-// and its height and rim radius must follow the stone's size and speed. Set
-// SPINDRIFT_WATER_PNG_DIR to write the frames as PNGs.
+// and its height and rim radius must follow the stone's size and speed. It must read
+// as water: clear, so a pattern moved behind it shows through, white only at its rim,
+// and its second splash a narrow jet. Set SPINDRIFT_WATER_PNG_DIR to write the frames
+// as PNGs.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -12,12 +14,20 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
 #include "HeadlessTest.h"
 #include "RenderStage.h"
 #include "SimTestLevel.h"
+#include "effects/gl/PipelineState.h"
 #include "effects/water/WaterPass.h"
 #include "effects/water/WaterView.h"
 #include "game/capture/ImageFiles.h"
+#include "game/replay/CameraTrack.h"
+#include "game/replay/ReplayReader.h"
+#include "sim/player/CameraRig.h"
 #include "sim/objects/ThrownObjects.h"
 #include "sim/water/WaterSim.h"
 #include "sim/world/World.h"
@@ -88,6 +98,7 @@ Crown measure_crown(float radius_m, float speed_mps) {
 // The largest 8-connected region of the mask and the mask's size.
 struct Regions {
     int largest = 0, total = 0, count = 0;
+    glm::ivec4 largest_box{0};  // the largest region's x0, y0, x1, y1 (inclusive)
 };
 Regions regions(const std::vector<uint8_t>& mask, int w, int h) {
     Regions r;
@@ -96,6 +107,7 @@ Regions regions(const std::vector<uint8_t>& mask, int w, int h) {
         if (!mask[start] || label[start]) continue;
         ++r.count;
         int size = 0;
+        glm::ivec4 box(int(start) % w, int(start) / w, int(start) % w, int(start) / w);
         stack.assign(1, int(start));
         label[start] = r.count;
         while (!stack.empty()) {
@@ -103,6 +115,7 @@ Regions regions(const std::vector<uint8_t>& mask, int w, int h) {
             stack.pop_back();
             ++size;
             const int x = p % w, y = p / w;
+            box = glm::ivec4(std::min(box.x, x), std::min(box.y, y), std::max(box.z, x), std::max(box.w, y));
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int nx = x + dx, ny = y + dy;
@@ -115,6 +128,7 @@ Regions regions(const std::vector<uint8_t>& mask, int w, int h) {
                 }
         }
         r.total += size;
+        if (size > r.largest) r.largest_box = box;
         r.largest = std::max(r.largest, size);
     }
     return r;
@@ -158,6 +172,65 @@ protected:
 
     std::unique_ptr<RenderStage> stage_;
 };
+
+// Where the sheet stands in front of what is behind it: the window depth differs.
+std::vector<uint8_t> depth_mask(const std::vector<float>& with, const std::vector<float>& without) {
+    std::vector<uint8_t> mask(with.size(), 0);
+    for (size_t p = 0; p < mask.size(); ++p) mask[p] = with[p] != without[p];
+    return mask;
+}
+
+// The crown's rim: the top `band` pixels of the mask in each column (seen from the
+// side, its top edge is the torn rim); its interior: the pixels at least `inset` from
+// anything outside the mask, and not rim.
+struct CrownParts {
+    std::vector<size_t> rim, interior;
+};
+CrownParts crown_parts(const std::vector<uint8_t>& mask, int w, int h, int band = 3, int inset = 4) {
+    CrownParts parts;
+    std::vector<uint8_t> rim(mask.size(), 0);
+    for (int x = 0; x < w; ++x) {
+        int y = 0;
+        while (y < h && !mask[size_t(y) * size_t(w) + size_t(x)]) ++y;
+        for (int k = 0; k < band && y + k < h && mask[size_t(y + k) * size_t(w) + size_t(x)]; ++k) {
+            rim[size_t(y + k) * size_t(w) + size_t(x)] = 1;
+            parts.rim.push_back(size_t(y + k) * size_t(w) + size_t(x));
+        }
+    }
+    for (int y = inset; y < h - inset; ++y)
+        for (int x = inset; x < w - inset; ++x) {
+            const size_t p = size_t(y) * size_t(w) + size_t(x);
+            bool inside = mask[p] && !rim[p];
+            for (int dy = -inset; inside && dy <= inset; ++dy)
+                for (int dx = -inset; inside && dx <= inset; ++dx)
+                    inside = mask[size_t(y + dy) * size_t(w) + size_t(x + dx)] != 0;
+            if (inside) parts.interior.push_back(p);
+        }
+    return parts;
+}
+
+float luminance01(const game::ImageRGBA8& img, size_t p) {
+    const uint8_t* c = &img.pixels[p * 4];
+    return (0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2]) / 255.0f;
+}
+bool white(const game::ImageRGBA8& img, size_t p) {
+    const uint8_t* c = &img.pixels[p * 4];
+    const int lo = std::min({c[0], c[1], c[2]}), hi = std::max({c[0], c[1], c[2]});
+    return hi > 0 && float(lo) / float(hi) > 0.9f && luminance01(img, p) > 0.8f;
+}
+float median_luminance(const game::ImageRGBA8& img, const std::vector<size_t>& pixels) {
+    std::vector<float> l;
+    for (size_t p : pixels) l.push_back(luminance01(img, p));
+    if (l.empty()) return 0.0f;
+    std::nth_element(l.begin(), l.begin() + std::ptrdiff_t(l.size() / 2), l.end());
+    return l[l.size() / 2];
+}
+
+// Window depth of a world point.
+float window_depth(const effects::Camera& camera, glm::vec3 p) {
+    const glm::vec4 clip = camera.view_proj * glm::vec4(p, 1.0f);
+    return 0.5f * clip.z / clip.w + 0.5f;
+}
 
 TEST_F(SplashCrownRender, TheRisingCrownIsOneSheet) {
     sim::World& world = stage_->world();
@@ -212,4 +285,149 @@ TEST_F(SplashCrownRender, TheRisingCrownIsOneSheet) {
         ++checked;
     }
     EXPECT_GE(checked, 2) << "the crown should rise for a few frames";
+}
+
+// harbour_boat's crown (682) and jet (703) as the replay renders them: the stone thrown
+// from the boat, seen from the side by the script's cameras 3 m off.
+class SplashCheckpoint : public HeadlessTest {
+protected:
+    void replay_to(uint32_t tick) {
+        const game::Replay replay = game::read_replay(
+            std::filesystem::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays" / "harbour_boat.replay");
+        const game::ReplayHeader& h = replay.header;
+        ASSERT_NE(std::find(h.checkpoints.begin(), h.checkpoints.end(), tick), h.checkpoints.end());
+        stage_ = std::make_unique<RenderStage>(game::GameSession::open(h.level_id, 1, h.seed),
+                                               StageOptions{.width = int(h.frame_width), .height = int(h.frame_height)});
+        sim::World& world = stage_->world();
+        for (uint32_t t = 0; t < tick && t < replay.inputs.size(); ++t) world.step(replay.inputs[t]);
+        view_ = game::CameraTrack(h.camera_shots, h.tick_rate_hz).view_at(tick, world.get<sim::CameraRig>().view());
+        time_s_ = double(tick) * sim::kTickSeconds;
+        effects::gather_water_view(world, water_);
+        water_.spray.clear();  // the sheets alone
+        // The splash the camera looks at: the sheet nearest its target.
+        float nearest = 1e9f;
+        for (const sim::SplashSheet& s : world.get<sim::WaterSim>().sheets()) {
+            const float d = glm::distance(s.centre_xz(), glm::vec2(view_.target.x, view_.target.z));
+            if (s.active() && d < nearest) nearest = d, centre_ = s.centre_xz();
+        }
+        ASSERT_LT(nearest, 2.0f) << "no splash in front of the checkpoint's camera";
+    }
+
+    // The checkpoint's frame with the given water, and the window depth it left.
+    game::ImageRGBA8 render(const effects::WaterView& water, std::vector<float>* depth = nullptr) {
+        RenderStage& stage = *stage_;
+        auto draw = [&](const effects::FrameContext& f) { stage.pass<effects::WaterPass>().draw(f, water); };
+        auto img = stage.render(view_, {.time_s = time_s_, .replaced = kWaterPass, .replacement = draw});
+        if (depth) *depth = stage.depth();
+        return img;
+    }
+    // Where the sheets stand in front of what is behind them.
+    std::vector<uint8_t> sheet_mask() {
+        std::vector<float> with, without;
+        render(water_, &with);
+        effects::WaterView bare = water_;
+        bare.sheets.clear();
+        render(bare, &without);
+        return depth_mask(with, without);
+    }
+
+    // The checkpoint's frame with the opaque scene replaced by a wall of checks
+    // standing square to the view at `wall_depth` (window depth), its checks shifted by
+    // `shift` squares.
+    game::ImageRGBA8 render_before_wall(float wall_depth, int shift) {
+        RenderStage& stage = *stage_;
+        bool copied = false;
+        const effects::WaterView& view = water_;
+        auto draw = [&](const effects::FrameContext& f) {
+            if (copied) {  // the water's turn
+                stage.pass<effects::WaterPass>().draw(f, view);
+                return;
+            }
+            effects::gl::apply(effects::gl::kInitialState);
+            glBindFramebuffer(GL_FRAMEBUFFER, f.targets.hdr().id());
+            glViewport(0, 0, f.targets.width(), f.targets.height());
+            glClearBufferfv(GL_DEPTH, 0, &wall_depth);
+            glEnable(GL_SCISSOR_TEST);
+            constexpr int kCheck = 6;
+            // A textured board in daylight: checks of twice the other's albedo (checks of five
+            // times showed through today's pale sheet too).
+            const float light[4] = {0.32f, 0.28f, 0.22f, 1.0f}, dark[4] = {0.16f, 0.14f, 0.11f, 1.0f};
+            for (int y = 0; y < f.targets.height(); y += kCheck)
+                for (int x = 0; x < f.targets.width(); x += kCheck) {
+                    glScissor(x, y, kCheck, kCheck);
+                    glClearBufferfv(GL_COLOR, 0, ((x / kCheck + y / kCheck + shift) % 2) ? light : dark);
+                }
+            glDisable(GL_SCISSOR_TEST);
+            f.targets.copy_scene();
+            copied = true;
+        };
+        return stage.render(view_, {.time_s = time_s_, .replaced = kSceneCopyPass | kWaterPass, .replacement = draw});
+    }
+
+    void TearDown() override { stage_.reset(); }
+
+    std::unique_ptr<RenderStage> stage_;
+    sim::CameraView view_;
+    double time_s_ = 0.0;
+    effects::WaterView water_;
+    glm::vec2 centre_{0.0f};
+};
+
+// A real crown is clear water: what is behind it shows through, bent and darkened. A
+// wall of checks 1.5 m behind the crown at 682 is shifted by one check: most of the
+// crown's interior must change with it.
+TEST_F(SplashCheckpoint, WhatIsBehindTheCrownShowsThrough) {
+    replay_to(682);
+    const auto mask = sheet_mask();
+    const effects::Camera camera = stage_->camera(view_);
+    const glm::vec3 forward = glm::normalize(glm::vec3(centre_.x, 0.5f, centre_.y) - view_.eye);
+    const float wall = window_depth(camera, glm::vec3(centre_.x, 0.5f, centre_.y) + 1.5f * forward);
+    const auto a = render_before_wall(wall, 0);
+    const auto b = render_before_wall(wall, 1);
+    maybe_write_png("crown_wall_a", a);
+    maybe_write_png("crown_wall_b", b);
+    const CrownParts parts = crown_parts(mask, stage_->width(), stage_->height());
+    ASSERT_GT(parts.interior.size(), 1000u) << "the crown's interior should cover a thousand pixels close up";
+    size_t changed = 0;
+    for (size_t p : parts.interior) {
+        int diff = 0;
+        for (int c = 0; c < 3; ++c) diff = std::max(diff, std::abs(int(a.pixels[p * 4 + c]) - int(b.pixels[p * 4 + c])));
+        changed += diff > 10;
+    }
+    const double share = double(changed) / double(parts.interior.size());
+    std::printf("crown see-through: %zu of %zu interior pixels change (%.1f%%)\n", changed, parts.interior.size(),
+                100.0 * share);
+    EXPECT_GE(share, 0.6) << "the crown should let what is behind it through, not hide it";
+}
+
+// Clear body, white rim: the crown's torn top edge is whiter than its body, and little of
+// the body is white.
+TEST_F(SplashCheckpoint, TheCrownIsClearWithAWhiteRim) {
+    replay_to(682);
+    const auto mask = sheet_mask();
+    const auto img = render(water_);
+    maybe_write_png("crown_look", img);
+    const CrownParts parts = crown_parts(mask, stage_->width(), stage_->height());
+    ASSERT_GT(parts.interior.size(), 1000u);
+    ASSERT_GT(parts.rim.size(), 100u);
+    const float rim = median_luminance(img, parts.rim), interior = median_luminance(img, parts.interior);
+    size_t whites = 0;
+    for (size_t p : parts.interior) whites += white(img, p);
+    const double white_share = double(whites) / double(parts.interior.size());
+    std::printf("crown look: rim median luminance %.3f, interior %.3f; white %.1f%% of the interior\n", rim, interior,
+                100.0 * white_share);
+    EXPECT_GE(rim - interior, 0.15f) << "the torn rim should read white over a clear body";
+    EXPECT_LE(white_share, 0.25) << "the body of the crown should be clear, not white";
+}
+
+// The second splash is a jet: a column of water, at least 2.5 times as tall on screen as
+// it is wide at its checkpoint (703).
+TEST_F(SplashCheckpoint, TheSecondSplashIsANarrowJet) {
+    replay_to(703);
+    maybe_write_png("jet", render(water_));
+    const Regions r = regions(sheet_mask(), stage_->width(), stage_->height());
+    ASSERT_GT(r.largest, 200) << "the jet should cover a few hundred pixels";
+    const int w = r.largest_box.z - r.largest_box.x + 1, h = r.largest_box.w - r.largest_box.y + 1;
+    std::printf("jet: %d x %d pixels (%.2f times as tall as wide)\n", w, h, double(h) / w);
+    EXPECT_GE(double(h), 2.5 * w) << "the jet should be a column, not a hood";
 }

@@ -249,7 +249,7 @@ TEST(SplashSheetMesh, OnlyTrianglesWithThreeAirborneCornersWithUpwardNormalsAtRe
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) pos.push_back({float(i) * 0.1f, 0.0f, float(j) * 0.1f});
     effects::SplashSheetMesh mesh;
-    mesh.append({n, 0.1f, pos, air}, 6.0f);
+    mesh.append({n, 0.1f, pos, air}, 6.0f, 0.0f);
     EXPECT_TRUE(mesh.vertices.empty()) << "a sheet with nothing in the air adds nothing";
 
     // A 3x3 block of airborne vertices: 2x2 quads, 8 triangles.
@@ -258,7 +258,7 @@ TEST(SplashSheetMesh, OnlyTrianglesWithThreeAirborneCornersWithUpwardNormalsAtRe
     // A lone airborne vertex and an airborne pair add no triangle.
     air[size_t(5 * n + 5)] = 1;
     air[size_t(0 * n + 4)] = air[size_t(0 * n + 5)] = 1;
-    mesh.append({n, 0.1f, pos, air}, 6.0f);
+    mesh.append({n, 0.1f, pos, air}, 6.0f, 0.0f);
     EXPECT_EQ(mesh.indices.size(), 8u * 3u);
     ASSERT_EQ(mesh.vertices.size(), size_t(n * n));
     for (uint32_t idx : mesh.indices) EXPECT_TRUE(air[idx]) << "triangle corner " << idx << " is not airborne";
@@ -274,7 +274,7 @@ TEST(SplashSheetMesh, OnlyTrianglesWithThreeAirborneCornersWithUpwardNormalsAtRe
     EXPECT_FLOAT_EQ(mesh.vertices[size_t(5 * n + 5)].cover, 0.0f);
 
     // A second sheet's indices point past the first's vertices.
-    mesh.append({n, 0.1f, pos, air}, 6.0f);
+    mesh.append({n, 0.1f, pos, air}, 6.0f, 0.0f);
     EXPECT_EQ(mesh.indices.size(), 16u * 3u);
     EXPECT_EQ(mesh.indices[24], uint32_t(n * n) + mesh.indices[0]);
 
@@ -282,7 +282,7 @@ TEST(SplashSheetMesh, OnlyTrianglesWithThreeAirborneCornersWithUpwardNormalsAtRe
     // are left out, the others stay.
     mesh.clear();
     pos[size_t(3 * n + 3)] += glm::vec3(6.0f, 4.0f, 6.0f);
-    mesh.append({n, 0.1f, pos, air}, 6.0f);
+    mesh.append({n, 0.1f, pos, air}, 6.0f, 0.0f);
     EXPECT_LT(mesh.indices.size(), 8u * 3u);
     EXPECT_GE(mesh.indices.size(), 5u * 3u);
     for (uint32_t idx : mesh.indices) EXPECT_TRUE(air[idx]);

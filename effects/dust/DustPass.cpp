@@ -1,5 +1,6 @@
 #include "effects/dust/DustPass.h"
 
+#include "effects/gl/DrawCount.h"
 #include "effects/gl/PipelineState.h"
 
 #include <algorithm>
@@ -132,6 +133,7 @@ void DustPass::render(const FrameContext& frame) {
         shell_.use();
         shell_.set("u_fin", 0);
         geometry_.shells().bind();
+        gl::count_draw(r.shell_index_count, shells + 1);
         glDrawElementsInstanced(GL_TRIANGLES, r.shell_index_count, GL_UNSIGNED_INT,
                                 reinterpret_cast<const void*>(r.first_shell_index * sizeof(uint32_t)), shells + 1);
         // The stack's height on screen at the prop's nearest point.
@@ -140,6 +142,7 @@ void DustPass::render(const FrameContext& frame) {
             fin_.use();
             fin_.set("u_fin", 1);
             geometry_.fins().bind();
+            gl::count_draw(r.fin_index_count);
             glDrawElements(GL_TRIANGLES, r.fin_index_count, GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(r.first_fin_index * sizeof(uint32_t)));
         }

@@ -15,4 +15,14 @@ Camera make_camera(const sim::CameraView& v, float aspect) {
     return c;
 }
 
+Camera jittered(Camera c, glm::vec2 ndc) {
+    // In clip space x' = x + ndc.x * w: after the divide, every point moves by ndc.
+    c.proj = glm::translate(glm::mat4(1.0f), glm::vec3(ndc, 0.0f)) * c.proj;
+    c.view_proj = c.proj * c.view;
+    c.inv_view_proj = glm::inverse(c.view_proj);
+    c.inv_proj = glm::inverse(c.proj);
+    c.jitter_ndc += ndc;
+    return c;
+}
+
 }  // namespace effects

@@ -17,7 +17,7 @@ void FxaaPass::register_params(ParamRegistry& params) {
 void FxaaPass::render(const FrameContext& frame) {
     if (!frame.resources.quality.antialias) return;
     SceneTargets& t = frame.targets;
-    if (t.width() == frame.output.width && t.height() == frame.output.height)
+    if (t.width() == frame.output.width && t.height() == frame.output.height && !frame.resources.quality.temporal)
         glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
     else
         t.antialiased_fbo().bind();

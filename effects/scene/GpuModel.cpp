@@ -10,6 +10,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "effects/gl/DrawCount.h"
+
 namespace effects {
 
 GpuModel::GpuModel(const Model& model) : name_(model.name) {
@@ -60,6 +62,7 @@ void GpuModel::draw_range(const gl::Program& program, bool depth_only, const Ran
         program.set("u_metallic", r.metallic);
         program.set("u_emissive", r.emissive);
     }
+    gl::count_draw(r.index_count);
     glDrawElements(GL_TRIANGLES, r.index_count, GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(r.first_index * sizeof(uint32_t)));
 }

@@ -34,6 +34,10 @@ void SceneTargets::resize(int width, int height) {
     display_fbo_ = gl::Framebuffer{};
     antialiased_ = gl::Texture{};
     antialiased_fbo_ = gl::Framebuffer{};
+    for (int i = 0; i < 2; ++i) {
+        history_[i] = gl::Texture{};
+        history_fbo_[i] = gl::Framebuffer{};
+    }
 }
 
 void SceneTargets::write_normals(bool on) {
@@ -58,6 +62,19 @@ const gl::Framebuffer& SceneTargets::display_fbo() {
         display_fbo_.check_complete();
     }
     return display_fbo_;
+}
+
+void SceneTargets::start_history_frame() {
+    current_history_ = 1 - current_history_;
+    for (int i = 0; i < 2; ++i) {
+        if (history_[i].id() != 0) continue;
+        history_[i] = gl::Texture::create_2d("scene.history", GL_RGBA8, width_, height_);
+        history_[i].set_filter(GL_LINEAR, GL_LINEAR);
+        history_[i].set_wrap(GL_CLAMP_TO_EDGE);
+        history_fbo_[i] = gl::Framebuffer::create("scene.history");
+        history_fbo_[i].attach_colour(0, history_[i]);
+        history_fbo_[i].check_complete();
+    }
 }
 
 const gl::Framebuffer& SceneTargets::antialiased_fbo() {

@@ -51,6 +51,13 @@ public:
     // output. Made on first use.
     const gl::Framebuffer& antialiased_fbo();
     const gl::Texture& antialiased() const { return antialiased_; }
+    // Temporal upsampling's two resolved images at the scene's size (TemporalPass):
+    // start_history_frame() makes last frame's the one read (previous_history()) and the
+    // other the one written (history_fbo(), history()). Made on first use, bilinear.
+    void start_history_frame();
+    const gl::Framebuffer& history_fbo() const { return history_fbo_[current_history_]; }
+    const gl::Texture& history() const { return history_[current_history_]; }
+    const gl::Texture& previous_history() const { return history_[1 - current_history_]; }
 
 private:
     void set_hdr_draw_buffers();
@@ -60,6 +67,9 @@ private:
     bool writes_normals_ = false;
     gl::Texture colour_, normal_, depth_, colour_copy_, depth_copy_, display_, antialiased_;
     gl::Framebuffer hdr_fbo_, copy_fbo_, display_fbo_, antialiased_fbo_;
+    gl::Texture history_[2];
+    gl::Framebuffer history_fbo_[2];
+    int current_history_ = 0;
 };
 
 }  // namespace effects

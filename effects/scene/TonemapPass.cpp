@@ -11,10 +11,11 @@ TonemapPass::TonemapPass()
 void TonemapPass::register_params(ParamRegistry& params) { params.add("tonemap", "exposure", &exposure_, 0.1f, 4.0f); }
 
 void TonemapPass::render(const FrameContext& frame) {
-    // Into the output at its own size; for a smaller scene or anti-aliasing, into the
-    // display image that the anti-aliasing or the upscale pass reads.
+    // Into the output at its own size; for a smaller scene, anti-aliasing or temporal
+    // upsampling, into the display image that they or the upscale pass read.
     SceneTargets& t = frame.targets;
-    if (t.width() == frame.output.width && t.height() == frame.output.height && !frame.resources.quality.antialias) {
+    const QualitySettings& q = frame.resources.quality;
+    if (t.width() == frame.output.width && t.height() == frame.output.height && !q.antialias && !q.temporal) {
         glBindFramebuffer(GL_FRAMEBUFFER, frame.output.framebuffer);
         glViewport(0, 0, frame.output.width, frame.output.height);
     } else {

@@ -5,10 +5,11 @@
 namespace effects {
 
 // The tone-mapped frame from the scene's size to the output's when the renderer draws
-// the scene smaller than the output (dynamic resolution, presets): an edge-adaptive
-// upscale with contrast-adaptive sharpening (shaders/scene/upscale.frag.glsl). Does
-// nothing at a render scale of 1, where the tone map or the anti-aliasing writes the
-// output itself.
+// the scene smaller than the output (dynamic resolution, presets): one bilinear fetch a
+// pixel, its place within the texel steepened a little (shaders/scene/upscale.frag.glsl);
+// at auto what it enlarges is anti-aliased first (TemporalPass). Does nothing at a render
+// scale of 1, where the tone map or the anti-aliasing writes the output itself, unless
+// the temporal resolve holds the frame (then it copies it).
 class UpscalePass final : public Pass {
 public:
     UpscalePass();
@@ -18,8 +19,7 @@ public:
 
 private:
     gl::Program program_;
-    float edge_ = 0.5f;  // fully steepened, a low scale's aliased edges read as stairs
-    float sharpness_ = 0.5f;
+    float edge_ = 0.25f;  // more, and a small scene's pixels read as blocks
 };
 
 }  // namespace effects

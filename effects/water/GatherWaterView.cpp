@@ -18,7 +18,7 @@ void gather_water_view(const sim::World& world, WaterView& out) {
     const sim::WaveGrid& g = water->grid();
     out.grid = WaveHeights{g.size(), g.spacing(), g.origin(), g.heights()};
     for (const sim::SplashSheet& s : water->sheets())
-        if (s.active()) out.sheets.push_back({s.size(), s.spacing(), s.positions(), s.airborne()});
+        if (s.active()) out.sheets.push_back({s.size(), s.spacing(), s.positions(), s.airborne(), s.centre_xz()});
     const auto& drops = water->spray().particles();
     out.spray.reserve(drops.size());
     for (const sim::SprayParticle& p : drops) out.spray.push_back({p.position, p.radius_m});

@@ -7,10 +7,37 @@
 
 namespace effects {
 
-void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch) {
+void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch, float sea_level_m) {
     const int n = sheet.size;
-    auto up = [&](int i, int j) { return sheet.airborne[size_t(j) * size_t(n) + size_t(i)] != 0; };
-    auto pos = [&](int i, int j) { return sheet.positions[size_t(j) * size_t(n) + size_t(i)]; };
+    const size_t count = size_t(n) * size_t(n);
+    auto at = [&](int i, int j) { return size_t(j) * size_t(n) + size_t(i); };
+    auto up = [&](int i, int j) { return sheet.airborne[at(i, j)] != 0; };
+
+    // The jet's vertices, drawn pulled in towards its axis (kJetSqueeze).
+    jet_.assign(count, 0);
+    shown_.assign(sheet.positions.begin(), sheet.positions.end());
+    if (sheet.centre_xz) {
+        const glm::vec2 axis = *sheet.centre_xz;
+        const int half = n / 2;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const size_t k = at(i, j);
+                const glm::vec3 p = sheet.positions[k];
+                const float height = p.y - sea_level_m;
+                const glm::vec2 rest = axis + glm::vec2(float(i - half), float(j - half)) * sheet.spacing_m;
+                const glm::vec2 xz(p.x, p.z);
+                if (!up(i, j) || !(height > kJetLowM) || glm::distance(xz, rest) >= kJetMaxLean * height) continue;
+                jet_[k] = 1;
+                const float t = std::min((height - kJetLowM) / (kJetHighM - kJetLowM), 1.0f);
+                const float squeeze = 1.0f - (1.0f - kJetSqueeze) * t * t * (3.0f - 2.0f * t);
+                const glm::vec2 drawn_xz = axis + (xz - axis) * squeeze;
+                shown_[k] = {drawn_xz.x, p.y, drawn_xz.y};
+            }
+    }
+    auto pos = [&](int i, int j) { return shown_[at(i, j)]; };
+    // A triangle of the jet and the crown together would span the gap the squeeze opened.
+    auto one_part = [&](size_t a, size_t b, size_t c) { return jet_[a] == jet_[b] && jet_[b] == jet_[c]; };
+
     // Torn: an edge longer than tear_stretch times the longest at rest (the diagonal),
     // or the area grown past tear_stretch squared. Both false for NaN: left out.
     const float max_edge2 = 2.0f * (tear_stretch * sheet.spacing_m) * (tear_stretch * sheet.spacing_m);
@@ -26,16 +53,35 @@ void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch) {
     for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i) {
             if (!up(i, j) || !up(i + 1, j + 1)) continue;
-            uint32_t a = base + uint32_t(j * n + i), b = a + 1, c = a + uint32_t(n) + 1, d = a + uint32_t(n);
-            glm::vec3 pa = pos(i, j), pb = pos(i + 1, j), pc = pos(i + 1, j + 1), pd = pos(i, j + 1);
-            if (up(i + 1, j) && intact(pa, pb, pc)) indices.insert(indices.end(), {a, b, c});
-            if (up(i, j + 1) && intact(pa, pc, pd)) indices.insert(indices.end(), {a, c, d});
+            const size_t ka = at(i, j), kb = at(i + 1, j), kc = at(i + 1, j + 1), kd = at(i, j + 1);
+            uint32_t a = base + uint32_t(ka), b = base + uint32_t(kb), c = base + uint32_t(kc), d = base + uint32_t(kd);
+            glm::vec3 pa = shown_[ka], pb = shown_[kb], pc = shown_[kc], pd = shown_[kd];
+            if (up(i + 1, j) && one_part(ka, kb, kc) && intact(pa, pb, pc)) indices.insert(indices.end(), {a, b, c});
+            if (up(i, j + 1) && one_part(ka, kc, kd) && intact(pa, pc, pd)) indices.insert(indices.end(), {a, c, d});
         }
     if (indices.size() == first_index) return;
-    std::vector<uint8_t> drawn(size_t(n) * size_t(n), 0);
-    for (size_t k = first_index; k < indices.size(); ++k) ++drawn[indices[k] - base];
+    const size_t sheet_indices_end = indices.size();
 
-    vertices.reserve(vertices.size() + size_t(n) * size_t(n));
+    // The column's side: each edge of the jet's outline carried straight down into the
+    // water, so the jet stands in it rather than hanging as a hood.
+    auto jet = [&](int i, int j) { return i >= 0 && j >= 0 && i < n && j < n && jet_[at(i, j)] != 0; };
+    std::vector<std::pair<size_t, size_t>>& foot = foot_;
+    foot.clear();
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            if (!jet(i, j)) continue;
+            // Along i: outline where the rows on either side are not both jet.
+            if (jet(i + 1, j) && !(jet(i, j - 1) && jet(i + 1, j - 1) && jet(i, j + 1) && jet(i + 1, j + 1)))
+                foot.push_back({at(i, j), at(i + 1, j)});
+            if (jet(i, j + 1) && !(jet(i - 1, j) && jet(i - 1, j + 1) && jet(i + 1, j) && jet(i + 1, j + 1)))
+                foot.push_back({at(i, j), at(i, j + 1)});
+        }
+
+    drawn_.assign(count, 0);
+    for (size_t k = first_index; k < sheet_indices_end; ++k) ++drawn_[indices[k] - base];
+    for (const auto& [ea, eb] : foot) drawn_[ea] = drawn_[eb] = 6;  // held by the side: not a free edge
+
+    vertices.reserve(vertices.size() + count + 2 * foot.size());
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             // Central differences inside, one-sided on the border. At rest the sheet lies
@@ -49,9 +95,26 @@ void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch) {
             float rest = float((i1 - i0) * (j1 - j0)) * sheet.spacing_m * sheet.spacing_m;
             float stretch = std::isfinite(len) ? len / rest : 1.0f;
             normal = (len > 1e-12f && std::isfinite(len)) ? normal / len : glm::vec3(0.0f, 1.0f, 0.0f);
-            const float cover = float(drawn[size_t(j) * size_t(n) + size_t(i)]) / 6.0f;
+            if (jet_[at(i, j)]) stretch = 1.0f;  // the column is solid water, not film thinned by the squeeze
+            const float cover = std::min(float(drawn_[at(i, j)]) / 6.0f, 1.0f);
             vertices.push_back({pos(i, j), normal, glm::vec2(float(i), float(j)), stretch, cover});
         }
+    for (const auto& [ea, eb] : foot) {
+        const uint32_t a = base + uint32_t(ea), b = base + uint32_t(eb);
+        const uint32_t fa = uint32_t(vertices.size()), fb = fa + 1;
+        for (uint32_t top : {a, b}) {
+            SheetVertex v = vertices[top];
+            const glm::vec2 out(v.position.x - sheet.centre_xz->x, v.position.z - sheet.centre_xz->y);
+            if (glm::dot(out, out) > 1e-12f) v.normal = glm::normalize(glm::vec3(out.x, 0.0f, out.y));
+            vertices[top].normal = v.normal;
+            // The column widens towards its foot, where it rises out of the water.
+            v.position.x = sheet.centre_xz->x + out.x * kJetFootFlare;
+            v.position.z = sheet.centre_xz->y + out.y * kJetFootFlare;
+            v.position.y = sea_level_m - kJetFootDepthM;
+            vertices.push_back(v);
+        }
+        indices.insert(indices.end(), {a, b, fb, a, fb, fa});
+    }
 }
 
 }  // namespace effects

@@ -4,6 +4,7 @@
 // above the water (the rest of the sheet stays hidden under the surface).
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -32,7 +33,29 @@ struct SplashSheetMesh {
     // Appends one sheet (all its vertices if any triangle is drawn, none otherwise).
     // A triangle stretched to more than tear_stretch times its size at rest (an edge
     // longer, or its area more than the square) has torn into spray and is left out. The sheet must be consistent (WaterView::validate).
-    void append(const SheetView& sheet, float tear_stretch);
+    // A sheet that says where it rests (SheetView::centre_xz) has its jet drawn as a
+    // column standing in the water at sea_level_m (kJetSqueeze).
+    void append(const SheetView& sheet, float tear_stretch, float sea_level_m);
+
+    // The sim throws the jet (a heavy object's second splash) as a dome of film lifted
+    // straight up from a patch as wide as the stone: from the side a hood whose edge
+    // hangs in the air. A real jet is a solid column of water narrower than the stone,
+    // rounded on top, standing in the water. So a vertex that has risen with almost no
+    // sideways travel from its rest (the crown's fly out at least half as fast as they
+    // rise) is drawn this share of its distance from the sheet's centre, and the
+    // column's edge is carried down below the water. The squeeze comes in between
+    // kJetLowM and kJetHighM above the sea: lower down, a slow skirt vertex of a crown
+    // can hover near its rest on a passing wave.
+    static constexpr float kJetSqueeze = 0.3f;
+    static constexpr float kJetMaxLean = 0.25f;  // sideways travel over height, at most
+    static constexpr float kJetLowM = 0.15f, kJetHighM = 0.35f;
+    static constexpr float kJetFootDepthM = 0.15f;  // how far below sea level its side goes
+    static constexpr float kJetFootFlare = 1.8f;    // its side's bottom, over the outline's distance from the axis
+
+private:
+    std::vector<glm::vec3> shown_;  // scratch: the sheet's positions as drawn
+    std::vector<uint8_t> jet_, drawn_;
+    std::vector<std::pair<size_t, size_t>> foot_;  // scratch: the jet's outline, as vertex pairs
 };
 
 }  // namespace effects

@@ -27,7 +27,7 @@ SplashSheetRenderer::SplashSheetRenderer()
 
 bool SplashSheetRenderer::update(const WaterView& view, float tear_stretch) {
     mesh_.clear();
-    for (const SheetView& s : view.sheets) mesh_.append(s, tear_stretch);
+    for (const SheetView& s : view.sheets) mesh_.append(s, tear_stretch, view.sea_level_m);
     if (mesh_.indices.empty()) return false;
     if (ensure_capacity(vertices_, "water.sheet.vertices", mesh_.vertices.size() * sizeof(SheetVertex)))
         vao_.vertex_buffer(0, vertices_, 0, sizeof(SheetVertex));

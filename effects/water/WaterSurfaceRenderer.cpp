@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "effects/gl/DrawCount.h"
 #include "effects/gl/EmptyVertexArray.h"
 #include "effects/gl/PipelineState.h"
 
@@ -102,6 +103,7 @@ void WaterSurfaceRenderer::draw(const Camera& camera, int viewport_height, float
     bind_grid_textures();
     vao_.bind();
     auto draw_range = [](const IndexRange& r) {
+        gl::count_draw(int64_t(r.count));
         glDrawElements(GL_TRIANGLES, GLsizei(r.count), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(size_t(r.first) * sizeof(uint32_t)));
     };

@@ -35,6 +35,8 @@ void WaterView::validate() const {
                                         std::to_string(kMaxSheetSide));
         if (!(s.spacing_m > 0.0f) || !std::isfinite(s.spacing_m))
             throw std::invalid_argument(which + " has a spacing that is not positive and finite");
+        if (s.centre_xz && !(std::isfinite(s.centre_xz->x) && std::isfinite(s.centre_xz->y)))
+            throw std::invalid_argument(which + " has a centre that is not finite");
         const size_t n = size_t(s.size) * size_t(s.size);
         if (s.positions.size() != n || s.airborne.size() != n)
             throw std::invalid_argument(which + " has " + std::to_string(s.positions.size()) + " positions and " +

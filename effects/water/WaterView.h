@@ -34,6 +34,10 @@ struct SheetView {
     float spacing_m = 0.0f;  // between neighbouring vertices at rest
     std::span<const glm::vec3> positions;
     std::span<const uint8_t> airborne;
+    // Where vertex (size/2, size/2) rests, vertex (i, j) resting (i - size/2, j - size/2)
+    // spacings from it (sim::SplashSheet::rest_xz): with it the renderer tells the jet's
+    // vertices, thrown straight up from their rest, from the crown's, thrown outward.
+    std::optional<glm::vec2> centre_xz;
 };
 
 // One spray droplet, laid out as the sprite renderer's instance data.

@@ -12,6 +12,7 @@
 #include "game/bench/BenchReport.h"
 #include "game/bench/BenchSupport.h"
 #include "game/bench/EnergyBench.h"
+#include "game/bench/AudioBench.h"
 #include "game/bench/RainBench.h"
 #include "game/bench/FluidBench.h"
 #include "game/bench/DustBench.h"
@@ -148,6 +149,10 @@ int bench_command(const std::vector<std::string>& argv) {
     if (runs("dust")) {
         std::cerr << "bench: dust\n";
         bench_dust_cpu(report, quick);
+    }
+    if (runs("audio")) {
+        std::cerr << "bench: audio\n";
+        bench_audio(report, quick);
     }
 
     HeadlessContext context;

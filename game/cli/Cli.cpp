@@ -36,7 +36,7 @@ commands:
          Record a replay headless from an input script (see replays/*.script).
   replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
               [--update-goldens] [--require-goldens] [--strict] [--threads N]
-              [--level NAME|PATH] [--quality Q] [--settings FILE]
+              [--level NAME|PATH] [--quality Q] [--settings FILE] [--audio OUT.wav]
          Play a replay in a window (at --quality), or headless. --check verifies every stored hash and
          compares the checkpoint frames with the goldens beside the replay
          (replays/NAME/tick_NNNNNN.png); failures write the actual frame and a
@@ -45,16 +45,19 @@ commands:
          --exr also as EXR (half-float HDR colour, depth, normals). --strict refuses a
          replay that was cut short. --update-goldens rewrites the goldens. A checkpoint
          with no golden yet is reported and skipped; --require-goldens fails the check.
-  timedemo REPLAY [--size WxH] [--quality Q] [--json FILE] [--headless] [--threads N]
+         --audio (with --headless) renders the replay's sound offline to OUT.wav
+         (48 kHz float stereo, the replay's cameras listening).
+  timedemo REPLAY [--size WxH] [--quality Q] [--scale S] [--json FILE] [--headless] [--threads N]
          Play a replay through play's frame loop in real time, every frame drawn with
          the HUD (a window if there is a display, else headless at --size, default
          1280x720), check its hashes, and report frames, fps, frame-time p50/p95/p99 and
-         worst, per-pass means, the render scale over time, game time / wall time and a
-         trivial full-screen fill, every time also in fills; --json writes it as JSON.
+         worst, per-pass means and draws, the render scale over time, game time / wall
+         time and a trivial full-screen fill, every time also in fills; --scale fixes
+         the render scale (0.25-1); --json writes it as JSON.
   bench  [--json FILE] [--quick] [--only {bench_groups}]
          Time the sim per subsystem, the replay check and each render pass at 1280x720
          and 640x360, and (play) the timedemo of every bundled replay at 1280x720 for
-         each quality; prints a table and writes JSON.
+         each quality and at 1920x1080 for auto and high; prints a table and writes JSON.
   fibres IMAGE [--slices N] [--layers OUT.png]  |  fibres --draw OUT.png [--slices N]
          Dust fibre statistics (seed 004): the 26-direction growth table of a binarised
          fibre image (black fibres on white; N slices stacked vertically, one per

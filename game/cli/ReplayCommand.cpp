@@ -1,6 +1,6 @@
 // spindrift replay FILE [--headless] [--check] [--frames LIST] [--out DIR] [--exr]
 //                      [--update-goldens] [--require-goldens] [--strict] [--threads N]
-//                      [--level NAME|PATH]
+//                      [--level NAME|PATH] [--audio OUT.wav] (headless)
 //                      [--quality low|medium|high|auto] (in a window)
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +8,7 @@
 #include <set>
 
 #include "effects/Renderer.h"
+#include "game/audio/ReplaySound.h"
 #include "game/capture/FrameCapture.h"
 #include "game/capture/FrameCompare.h"
 #include "game/capture/ImageFiles.h"
@@ -25,6 +26,7 @@
 #include "game/replay/ObjectiveSummary.h"
 #include "game/replay/ReplayCheck.h"
 #include "game/session/GameSession.h"
+#include "game/session/TickDriver.h"
 
 namespace game {
 
@@ -54,7 +56,7 @@ struct FrameOutcome {
 }  // namespace
 
 int replay_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality", "--settings"},
+    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality", "--settings", "--audio"},
               {"--headless", "--check", "--update-goldens", "--require-goldens", "--strict", "--exr"});
     if (args.positional().size() != 1) throw UsageError("replay takes one replay file");
     const fs::path path = args.positional()[0];
@@ -81,6 +83,8 @@ int replay_command(const std::vector<std::string>& argv) {
             throw UsageError("--frames names tick " + std::to_string(t) + ", past the replay's end (" +
                              std::to_string(total) + " ticks)");
 
+    const std::optional<std::string> audio_out = args.value("--audio");
+    if (audio_out && !args.flag("--headless")) throw UsageError("--audio renders the sound offline: add --headless");
     if (!args.flag("--headless")) {
         if (display_available()) return play_replay_in_window(replay, session, player_settings(args));
         std::cerr << "no display: replaying headless\n";
@@ -107,6 +111,19 @@ int replay_command(const std::vector<std::string>& argv) {
     }
 
     const CameraTrack cameras(header.camera_shots, header.tick_rate_hz);
+    // The sound file is opened (as OUT.wav.partial) before anything renders: an
+    // unwritable path is refused at once.
+    std::optional<audio::WavWriter> wav;
+    std::unique_ptr<OfflineSound> sound;
+    if (audio_out) {
+        try {
+            wav.emplace(*audio_out, audio::kSampleRate);
+        } catch (const audio::WavError& e) {
+            std::cerr << "error: " << e.what() << "\n";
+            return kExitIo;
+        }
+        sound = std::make_unique<OfflineSound>(cameras);
+    }
     ReplayChecker checker(replay);
     std::vector<FrameOutcome> outcomes;
     size_t missing_goldens = 0;
@@ -114,10 +131,22 @@ int replay_command(const std::vector<std::string>& argv) {
     std::optional<Divergence> divergence;
     Progress progress("replay " + path.filename().string(), total, "ticks");
     sim::World& world = *session.world;
+    TickDriver driver(world);
+    if (check) driver.listen([&](const sim::World& w, sim::TickInput) { divergence = checker.after_step(w); });
+    if (sound)
+        driver.listen([&](const sim::World& w, sim::TickInput) {
+            const std::vector<float>& samples = sound->after_tick(w);
+            wav->append(samples.data(), kFramesPerTick);
+        });
     for (uint32_t i = 0; i < total; ++i) {
-        world.step(replay.inputs[i]);
+        try {
+            driver.step(replay.inputs[i]);
+        } catch (const audio::WavError& e) {
+            std::cerr << "error: " << e.what() << "\n";
+            return kExitIo;
+        }
         const uint32_t tick = uint32_t(world.tick());
-        if (check && (divergence = checker.after_step(world))) break;
+        if (divergence) break;
         progress.update(tick);
         if (!frames.wants(tick, checkpoints)) continue;
 
@@ -175,6 +204,16 @@ int replay_command(const std::vector<std::string>& argv) {
         ok = ok && o.ok;
     }
     if (frames_written) std::cout << "  " << frames_written << " frames written to " << out_dir.string() << "\n";
+    if (wav && !divergence) {
+        try {
+            wav->finish();
+        } catch (const audio::WavError& e) {
+            std::cerr << "error: " << e.what() << "\n";
+            return kExitIo;
+        }
+        std::cout << "  sound: " << wav->frames() << " frames at " << audio::kSampleRate << " Hz written to " << *audio_out
+                  << "\n";
+    }
     if (divergence) {
         std::cout << "DESYNC at " << divergence->message << "\n";
         return kExitCheckFailed;

@@ -1,4 +1,4 @@
-// spindrift timedemo REPLAY [--size WxH] [--quality low|medium|high|auto] [--json FILE]
+// spindrift timedemo REPLAY [--size WxH] [--quality low|medium|high|auto] [--scale S] [--json FILE]
 //                           [--headless] [--threads N]
 #include <charconv>
 #include <filesystem>
@@ -43,15 +43,27 @@ Screen::Size size_option(const Args& args) {
     return size;
 }
 
+// --scale S: a fixed render scale in [0.25, 1] (auto: instead of its controller).
+std::optional<float> scale_option(const Args& args) {
+    const std::optional<std::string> text = args.value("--scale");
+    if (!text) return std::nullopt;
+    float scale = 0.0f;
+    const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), scale);
+    if (ec != std::errc() || end != text->data() + text->size() || !(scale >= 0.25f && scale <= 1.0f))
+        throw UsageError("--scale takes a render scale from 0.25 to 1, not \"" + *text + "\"");
+    return scale;
+}
+
 }  // namespace
 
 int timedemo_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--size", "--quality", "--json", "--threads"}, {"--headless"});
+    Args args(argv, {"--size", "--quality", "--scale", "--json", "--threads"}, {"--headless"});
     if (args.positional().size() != 1) throw UsageError("timedemo takes one replay file");
     const fs::path path = args.positional()[0];
     const Screen::Size size = size_option(args);
     const QualityChoice quality = quality_option(args);
     const int threads = args.integer("--threads", 1, 1, 64);
+    const std::optional<float> scale = scale_option(args);
 
     const Replay replay = read_replay(path, ReadOptions{});
     if (!replay.complete) std::cerr << path.string() << ": " << replay.cut_note << "\n";
@@ -75,7 +87,7 @@ int timedemo_command(const std::vector<std::string>& argv) {
     }
     std::cerr << "timedemo: playing " << path.filename().string() << " in real time ("
               << replay.inputs.size() / sim::kTickRateHz << " s)\n";
-    const TimedemoRun run = run_timedemo(replay, path.filename().string(), session, *screen, quality);
+    const TimedemoRun run = run_timedemo(replay, path.filename().string(), session, *screen, quality, scale);
     const TimedemoSummary summary = summarise(run);
     print_timedemo(run, summary);
     if (auto json = args.value("--json")) {

@@ -61,12 +61,6 @@ std::vector<std::string> hud_lines(const HudState& hud) {
     if (!hud.quality.empty())
         lines.push_back(format("quality %s  scale %.2f (%dx%d)", hud.quality.c_str(), double(hud.render_scale),
                                hud.render_width, hud.render_height));
-    double total_ms = 0.0;
-    for (const effects::gl::PassTime& p : hud.passes) {
-        lines.push_back(format("%-12s %6.2f ms", p.name.c_str(), p.average_ms));
-        total_ms += p.average_ms;
-    }
-    if (!hud.passes.empty()) lines.push_back(format("%-12s %6.2f ms", "total", total_ms));
     return lines;
 }
 
@@ -147,7 +141,7 @@ bool DebugUi::draw_debug_panel(effects::Renderer& renderer, QualityChoice& quali
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 10.0f, viewport->WorkPos.y + 10.0f),
                             ImGuiCond_FirstUseEver, ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(380.0f, viewport->WorkSize.y * 0.8f), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Debug (F1)", open)) {
+    if (!ImGui::Begin(kDebugPanelTitle, open)) {
         ImGui::End();
         return false;
     }
@@ -170,6 +164,7 @@ bool DebugUi::draw_debug_panel(effects::Renderer& renderer, QualityChoice& quali
     bool antialias = renderer.antialiasing();
     if (ImGui::Checkbox("anti-aliasing (FXAA, F3)", &antialias)) renderer.set_antialiasing(antialias);
 
+    double total_ms = 0.0;
     if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn("last ms");
@@ -183,7 +178,38 @@ bool DebugUi::draw_debug_panel(effects::Renderer& renderer, QualityChoice& quali
             ImGui::Text("%.2f", p.ms);
             ImGui::TableNextColumn();
             ImGui::Text("%.2f", p.average_ms);
+            total_ms += p.average_ms;
         }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("total");
+        ImGui::TableNextColumn();
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f", total_ms);
+        ImGui::EndTable();
+    }
+    // What each pass sent through the rasteriser's vertex stage last frame.
+    if (ImGui::BeginTable("draws", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("draws");
+        ImGui::TableSetupColumn("triangles");
+        ImGui::TableHeadersRow();
+        effects::gl::DrawCount total;
+        auto row = [](const char* name, const effects::gl::DrawCount& c) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(name);
+            ImGui::TableNextColumn();
+            ImGui::Text("%llu", static_cast<unsigned long long>(c.draws));
+            ImGui::TableNextColumn();
+            ImGui::Text("%llu", static_cast<unsigned long long>(c.triangles));
+        };
+        for (const effects::Renderer::PassDraws& d : renderer.pass_draws()) {
+            row(d.name.c_str(), d.count);
+            total.draws += d.count.draws;
+            total.triangles += d.count.triangles;
+        }
+        row("frame", total);
         ImGui::EndTable();
     }
 

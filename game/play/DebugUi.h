@@ -18,6 +18,9 @@ struct GLFWwindow;
 
 namespace game {
 
+// The F1 panel's window: others add their own controls to it (SoundPanel).
+inline constexpr const char* kDebugPanelTitle = "Debug (F1)";
+
 struct HudState {
     float speed_kmh = 0.0f;  // signed: negative when reversing
     sim::Vehicle vehicle = sim::Vehicle::Car;
@@ -34,12 +37,11 @@ struct HudState {
     float render_scale = 1.0f;
     int render_width = 0, render_height = 0;  // the 3D scene's internal resolution
     std::string status;  // e.g. "replay ended"; empty for none
-    std::vector<effects::gl::PassTime> passes;
 };
 
 // The world's part of the HUD: speed of the vehicle the player is in, view, weather, tick.
 HudState hud_state(const sim::World& world);
-// The HUD's text, one line each.
+// The HUD's text, one line each (the pass times are the debug panel's, F1, not the HUD's).
 std::vector<std::string> hud_lines(const HudState& hud);
 
 const char* vehicle_name(sim::Vehicle v);

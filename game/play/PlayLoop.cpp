@@ -12,6 +12,7 @@
 #include "game/play/FixedStepClock.h"
 #include "game/play/KeyboardInput.h"
 #include "game/play/ObjectiveHud.h"
+#include "game/play/SoundPanel.h"
 #include "game/play/WayfindingHud.h"
 #include "game/settings/SettingsFile.h"
 #include "sim/vehicle/Boat.h"
@@ -69,6 +70,8 @@ void PlayLoop::set_quality(QualityChoice quality) {
     settings_.quality = quality;
     renderer_->set_quality(preset_of(quality));
     renderer_->set_antialiasing(settings_.fxaa);  // the preset's is off; the player's choice stays
+    // Auto draws the scene small: temporal upsampling takes its stairs out.
+    renderer_->set_temporal(quality == QualityChoice::Auto);
     resolution_.reset();
     if (quality == QualityChoice::Auto) {
         ResolutionController::Options o;
@@ -77,6 +80,10 @@ void PlayLoop::set_quality(QualityChoice quality) {
         o.start_scale = std::clamp(renderer_->render_scale(), o.min_scale, o.max_scale);
         resolution_.emplace(o);
         renderer_->set_render_scale(resolution_->scale());
+    }
+    if (options_.render_scale) {
+        resolution_.reset();
+        renderer_->set_render_scale(*options_.render_scale);
     }
 }
 
@@ -121,6 +128,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
             input_.set_down(down);
         }
         const bool idle = is_idle();  // the events may have paused or unfocused it
+        if (options_.sound) options_.sound->set_paused(idle);
 
         const auto now = Clock::now();
         const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(now - last);
@@ -138,10 +146,8 @@ void PlayLoop::run(const LoopHooks& hooks) {
                     input_ended = true;
                     break;
                 }
-                const sim::TickInput applied = sim::quantise(*input);
                 previous_poses_ = poses_now(world);
-                world.step(applied);
-                hooks.after_tick(world, applied);
+                hooks.ticks->step(*input);
                 ++record.ticks;
             }
             record.dropped = clock.dropped();
@@ -298,6 +304,9 @@ void PlayLoop::on_ui_action(UiAction action) {
             change_settings(toggled);
             break;
         }
+        case UiAction::ToggleMute:
+            if (options_.sound) options_.sound->toggle_mute();
+            break;
     }
 }
 
@@ -322,7 +331,6 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     hud.behind = Clock::now() < behind_until_;
     hud.recording = hooks.recording();
     hud.status = hooks.status();
-    hud.passes = renderer_->pass_times();
     hud.quality = quality_choice_name(quality_);
     hud.render_scale = renderer_->render_scale();
     hud.render_width = renderer_->targets().width();
@@ -338,11 +346,10 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
                                    float(size.height)));
     if (panel_open_) {
         QualityChoice quality = quality_;
-        if (ui_.draw_debug_panel(*renderer_, quality, &panel_open_)) {
-            Settings chosen = settings_;
-            chosen.quality = quality;
-            change_settings(chosen);
-        }
+        Settings chosen = settings_;
+        if (ui_.draw_debug_panel(*renderer_, quality, &panel_open_)) chosen.quality = quality;
+        if (options_.sound) draw_sound_panel(*options_.sound);
+        if (!(chosen == settings_)) change_settings(chosen);
     }
     Settings edited = settings_;
     const PauseMenu::Choice choice = menu_.draw(
@@ -355,7 +362,16 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     if (choice == PauseMenu::Choice::Restart) restart_wanted_ = true;
     if (const auto now = Clock::now(); now < hint_until_ && !menu_.is_open())
         draw_menu_hint(std::chrono::duration<float>(hint_until_ - now).count());
+    // The UI's own time (at the output's size), exact one frame in eight: glFinish
+    // before and after it, as the renderer's sampled pass times.
+    const bool time_ui = ++ui_frames_ % 8 == 0;
+    if (time_ui) glFinish();
+    const auto ui_start = Clock::now();
     ui_.end_frame();
+    if (time_ui) {
+        glFinish();
+        ui_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - ui_start).count();
+    }
 
     if (screenshot_wanted_) {
         screenshot_wanted_ = false;

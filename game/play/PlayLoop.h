@@ -10,6 +10,7 @@
 
 #include "effects/Renderer.h"
 #include "effects/gl/DebugOutput.h"
+#include "game/audio/LiveSound.h"
 #include "game/play/DebugUi.h"
 #include "game/play/GamepadInput.h"
 #include "game/play/InputQueue.h"
@@ -20,6 +21,7 @@
 #include "game/replay/CameraTrack.h"
 #include "game/session/GameSession.h"
 #include "game/settings/Settings.h"
+#include "game/session/TickDriver.h"
 
 namespace game {
 
@@ -42,8 +44,8 @@ struct FrameRecord {
 struct LoopHooks {
     // The input for the next tick, or nothing once it has run out. Unset: the keyboard.
     std::function<std::optional<sim::TickInput>()> next_input;
-    // Called after each tick with the (quantised) input that was applied.
-    std::function<void(const sim::World&, sim::TickInput)> after_tick;
+    // Steps the session's world and tells its listeners (recorder, checker, sound).
+    TickDriver* ticks = nullptr;
     // A line for the HUD (recording state, replay progress, a desync).
     std::function<std::string()> status;
     std::function<bool()> recording;
@@ -55,6 +57,8 @@ struct LoopHooks {
 
 struct LoopOptions {
     QualityChoice quality = QualityChoice::Auto;
+    // A fixed render scale instead of the preset's (on auto, instead of its controller).
+    std::optional<float> render_scale;
     // A game idles while its window has lost the focus; a timedemo does not.
     bool pause_when_unfocused = true;
     // Stop once the input has run out (timedemo); otherwise the last frame stays up.
@@ -66,6 +70,8 @@ struct LoopOptions {
     // they last this run only).
     Settings settings;
     SettingsFile* settings_file = nullptr;
+    // The sound, paused with the game, muted by M, its volumes in the F1 panel (none: silent).
+    LiveSound* sound = nullptr;
 };
 
 class PlayLoop {
@@ -79,6 +85,9 @@ public:
 
     void set_quality(QualityChoice quality);
     const effects::Renderer& renderer() const { return *renderer_; }
+    // The UI's (HUD, text, debug panel) time at the output's size, its latest exact
+    // measurement (one frame in eight).
+    double ui_ms() const { return ui_ms_; }
 
 private:
     using Clock = std::chrono::steady_clock;
@@ -129,6 +138,8 @@ private:
     FpsMeter fps_;
     bool paused_ = false;
     bool panel_open_ = false;
+    uint64_t ui_frames_ = 0;
+    double ui_ms_ = 0.0;
     bool screenshot_wanted_ = false;
     bool restart_wanted_ = false;  // the menu's Restart, done after the frame
     Clock::time_point behind_until_{};  // the HUD says "behind real time" until then

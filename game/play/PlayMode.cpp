@@ -42,8 +42,12 @@ Window::Options window_options(const Settings& settings, std::string title) {
 int play_in_window(GameSession& session, const PlayOptions& options) {
     const Settings& settings = options.player.settings;
     WindowScreen screen(window_options(settings, "Spindrift"));
+    std::unique_ptr<LiveSound> sound = LiveSound::open(CameraTrack{});
     PlayLoop loop(session, screen,
-                  LoopOptions{.quality = settings.quality, .settings = settings, .settings_file = options.player.file.get()});
+                  LoopOptions{.quality = settings.quality,
+                              .settings = settings,
+                              .settings_file = options.player.file.get(),
+                              .sound = sound.get()});
     std::optional<ReplayWriter> writer;
     if (options.record) {
         writer.emplace(ReplayWriter::create(*options.record, replay_header_for(session, 480, 270, {})));
@@ -51,8 +55,8 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
                   << options.record->string() << " at the end)" << std::endl;
     }
     bool recording = writer.has_value();
-    LoopHooks hooks;  // no next_input: the keyboard drives
-    hooks.after_tick = [&](const sim::World& world, sim::TickInput applied) {
+    TickDriver ticks(*session.world);
+    ticks.listen([&](const sim::World& world, sim::TickInput applied) {
         if (!recording) return;
         writer->append(applied, world.hash());
         if (writer->ticks() >= kMaxReplayTicks) {
@@ -61,7 +65,10 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
             recording = false;
             std::cout << "recording stopped at the " << kMaxReplayTicks << "-tick limit" << std::endl;
         }
-    };
+    });
+    if (sound) ticks.listen([&](const sim::World& world, sim::TickInput) { sound->after_tick(world); });
+    LoopHooks hooks;  // no next_input: the keyboard drives
+    hooks.ticks = &ticks;
     hooks.status = [] { return std::string(); };
     hooks.recording = [&] { return recording; };
     hooks.restart = [&] {
@@ -72,6 +79,7 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
             std::cout << "recording stopped at the restart" << std::endl;
         }
         session.world = std::make_unique<sim::World>(session.level.sim, sim::WorldOptions{options.threads});
+        ticks.restart(*session.world);
     };
     loop.run(hooks);
     if (recording) writer->finish();
@@ -83,22 +91,28 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
 
 int play_replay_in_window(const Replay& replay, GameSession& session, const PlayerSettings& player) {
     WindowScreen screen(window_options(player.settings, "Spindrift - replay"));
+    const CameraTrack cameras(replay.header.camera_shots, replay.header.tick_rate_hz);
+    std::unique_ptr<LiveSound> sound = LiveSound::open(cameras);
     PlayLoop loop(session, screen,
                   LoopOptions{.quality = player.settings.quality,
-                              .cameras = CameraTrack(replay.header.camera_shots, replay.header.tick_rate_hz),
+                              .cameras = cameras,
                               .settings = player.settings,
-                              .settings_file = player.file.get()});
+                              .settings_file = player.file.get(),
+                              .sound = sound.get()});
     ReplayChecker checker(replay);
     std::optional<Divergence> divergence;
     size_t next = 0;
+    TickDriver ticks(*session.world);
+    ticks.listen([&](const sim::World& world, sim::TickInput) {
+        if (divergence) return;
+        if ((divergence = checker.after_step(world))) std::cout << "DESYNC at " << divergence->message << std::endl;
+    });
+    if (sound) ticks.listen([&](const sim::World& world, sim::TickInput) { sound->after_tick(world); });
     LoopHooks hooks;
+    hooks.ticks = &ticks;
     hooks.next_input = [&]() -> std::optional<sim::TickInput> {
         if (next >= replay.inputs.size()) return std::nullopt;
         return replay.inputs[next++];
-    };
-    hooks.after_tick = [&](const sim::World& world, sim::TickInput) {
-        if (divergence) return;
-        if ((divergence = checker.after_step(world))) std::cout << "DESYNC at " << divergence->message << std::endl;
     };
     hooks.status = [&] {
         std::string s = "replay " + std::to_string(next) + "/" + std::to_string(replay.inputs.size());

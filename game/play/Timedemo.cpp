@@ -17,7 +17,7 @@
 namespace game {
 
 TimedemoRun run_timedemo(const Replay& replay, const std::string& replay_name, GameSession& session,
-                         Screen& screen, QualityChoice quality) {
+                         Screen& screen, QualityChoice quality, std::optional<float> scale) {
     TimedemoRun run;
     run.replay = replay_name;
     run.quality = quality;
@@ -33,22 +33,25 @@ TimedemoRun run_timedemo(const Replay& replay, const std::string& replay_name, G
 
     PlayLoop loop(session, screen,
                   LoopOptions{.quality = quality,
+                              .render_scale = scale,
                               .pause_when_unfocused = false,
                               .end_with_input = true,
                               .cameras = CameraTrack(replay.header.camera_shots, replay.header.tick_rate_hz)});
     ReplayChecker checker(replay);
     size_t next = 0;
-    std::map<std::string, size_t> pass_index;
+    std::map<std::string, size_t> pass_index, draws_index;
     std::vector<double> pass_sums;
-    LoopHooks hooks;
-    hooks.next_input = [&]() -> std::optional<sim::TickInput> {
-        if (next >= replay.inputs.size()) return std::nullopt;
-        return replay.inputs[next++];
-    };
-    hooks.after_tick = [&](const sim::World& world, sim::TickInput) {
+    TickDriver ticks(*session.world);
+    ticks.listen([&](const sim::World& world, sim::TickInput) {
         ++run.ticks;
         if (run.desync) return;
         if (auto divergence = checker.after_step(world)) run.desync = divergence->message;
+    });
+    LoopHooks hooks;
+    hooks.ticks = &ticks;
+    hooks.next_input = [&]() -> std::optional<sim::TickInput> {
+        if (next >= replay.inputs.size()) return std::nullopt;
+        return replay.inputs[next++];
     };
     hooks.status = [&] {
         return "timedemo " + std::to_string(next) + "/" + std::to_string(replay.inputs.size()) +
@@ -63,12 +66,31 @@ TimedemoRun run_timedemo(const Replay& replay, const std::string& replay_name, G
             if (added) run.pass_ms.emplace_back(p.name, 0.0);
             run.pass_ms[it->second].second += p.ms;
         }
+        // The UI drawn at the output's size after the passes, timed by the loop.
+        auto [hud, added] = pass_index.try_emplace("hud", run.pass_ms.size());
+        if (added) run.pass_ms.emplace_back("hud", 0.0);
+        run.pass_ms[hud->second].second += loop.ui_ms();
+        for (const effects::Renderer::PassDraws& d : loop.renderer().pass_draws()) {
+            auto [it, added_draws] = draws_index.try_emplace(d.name, run.pass_draws.size());
+            if (added_draws) run.pass_draws.push_back({d.name});
+            run.pass_draws[it->second].draws += double(d.count.draws);
+            run.pass_draws[it->second].triangles += double(d.count.triangles);
+            run.frame_draws.draws += double(d.count.draws);
+            run.frame_draws.triangles += double(d.count.triangles);
+        }
     };
     loop.run(hooks);
     const std::vector<double> after = trivial_fill_samples(size.width, size.height, kFillsEachSide);
     fills.insert(fills.end(), after.begin(), after.end());
     run.fill_ms = median_ms(fills);
-    for (auto& [name, ms] : run.pass_ms) ms /= double(std::max<size_t>(run.frames.size(), 1));
+    const double frames = double(std::max<size_t>(run.frames.size(), 1));
+    for (auto& [name, ms] : run.pass_ms) ms /= frames;
+    auto mean = [frames](TimedemoRun::Draws& d) {
+        d.draws /= frames;
+        d.triangles /= frames;
+    };
+    mean(run.frame_draws);
+    for (TimedemoRun::Draws& d : run.pass_draws) mean(d);
     run.hashes_checked = checker.hashes_checked();
     return run;
 }
@@ -122,6 +144,10 @@ void print_timedemo(const TimedemoRun& run, const TimedemoSummary& s) {
     for (const auto& [name, ms] : rows) std::printf("  %-22s %10.2f %10.1f\n", name, ms, ms / fill);
     std::printf("  %-22s %10s %10s\n", "pass (mean)", "ms", "fills");
     for (const auto& [name, ms] : run.pass_ms) std::printf("  %-22s %10.2f %10.1f\n", name.c_str(), ms, ms / fill);
+    std::printf("  %-22s %10s %10s\n", "drawn (mean a frame)", "draws", "triangles");
+    for (const TimedemoRun::Draws& d : run.pass_draws)
+        std::printf("  %-22s %10.0f %10.0f\n", d.pass.c_str(), d.draws, d.triangles);
+    std::printf("  %-22s %10.0f %10.0f\n", "frame", run.frame_draws.draws, run.frame_draws.triangles);
     std::string timeline;
     for (float scale : s.scale_each_second) timeline += fmt(" %.2f", double(scale));
     std::printf("  render scale each second:%s\n", timeline.empty() ? " -" : timeline.c_str());
@@ -156,6 +182,12 @@ void write_timedemo_json(const std::filesystem::path& path, const TimedemoRun& r
                      {"desync", run.desync ? nlohmann::json(*run.desync) : nlohmann::json(nullptr)}};
     j["passes"] = nlohmann::json::array();
     for (const auto& [name, ms] : run.pass_ms) j["passes"].push_back({{"name", name}, {"ms", ms}, {"fills", ms / fill}});
+    auto draws = [](const TimedemoRun::Draws& d) {
+        return nlohmann::json{{"name", d.pass}, {"draws", d.draws}, {"triangles", d.triangles}};
+    };
+    j["draws"] = nlohmann::json::array();
+    for (const TimedemoRun::Draws& d : run.pass_draws) j["draws"].push_back(draws(d));
+    j["frame_draws"] = draws(run.frame_draws);
     j["scale_each_second"] = s.scale_each_second;
     j["seconds_at_scale"] = nlohmann::json::array();
     for (const auto& [scale, secs] : s.seconds_at_scale)

@@ -23,16 +23,25 @@ struct TimedemoRun {
     int width = 0, height = 0;
     QualityChoice quality = QualityChoice::Auto;
     std::vector<FrameRecord> frames;  // the first (warm-up) frame left out
-    std::vector<std::pair<std::string, double>> pass_ms;  // per pass, mean over the frames
+    std::vector<std::pair<std::string, double>> pass_ms;  // per pass, mean over the frames (and "hud": the UI)
+    // Draw calls and triangles per frame, mean over the frames: per pass that drew any
+    // (effects::gl::DrawCount), and the frame's total.
+    struct Draws {
+        std::string pass;
+        double draws = 0.0, triangles = 0.0;
+    };
+    std::vector<Draws> pass_draws;
+    Draws frame_draws{"frame"};
     double fill_ms = 0.0;  // TrivialFill at the output's size, in the same run
     uint64_t ticks = 0, replay_ticks = 0;
     size_t hashes_checked = 0;
     std::optional<std::string> desync;  // the first divergence, if the world left the replay
 };
 
-// Plays `replay` (the session opened for it) on `screen` until its inputs end.
+// Plays `replay` (the session opened for it) on `screen` until its inputs end; at
+// `scale` throughout when given (auto: instead of its controller).
 TimedemoRun run_timedemo(const Replay& replay, const std::string& replay_name, GameSession& session,
-                         Screen& screen, QualityChoice quality);
+                         Screen& screen, QualityChoice quality, std::optional<float> scale = std::nullopt);
 
 // The run as numbers.
 struct TimedemoSummary {

@@ -28,6 +28,7 @@ constexpr ActionInfo kActions[] = {
     {Action::RainDown, "rain_down", "Rain down", Control::RainDown, {}, {GLFW_KEY_F, 0}},
     {Action::Reset, "reset", "Reset the vehicle", Control::Reset, {}, {GLFW_KEY_BACKSPACE, 0}},
     {Action::Pause, "pause", "Pause", {}, UiAction::Pause, {GLFW_KEY_P, 0}},
+    {Action::Mute, "mute", "Mute the sound", {}, UiAction::ToggleMute, {GLFW_KEY_M, 0}},
     {Action::Screenshot, "screenshot", "Screenshot", {}, UiAction::Screenshot, {GLFW_KEY_F12, 0}},
     {Action::DebugPanel, "debug_panel", "Debug panel", {}, UiAction::ToggleDebugPanel, {GLFW_KEY_F1, 0}},
     {Action::ProfileTiming, "profile_timing", "Profile timing", {}, UiAction::ToggleProfileTiming, {GLFW_KEY_F2, 0}},

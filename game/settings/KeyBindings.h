@@ -14,13 +14,13 @@
 namespace game {
 
 // Keys that work on the program, acted on once per press.
-enum class UiAction { Menu, Pause, Screenshot, ToggleDebugPanel, ToggleProfileTiming, ToggleAntialiasing, Fullscreen };
+enum class UiAction { Menu, Pause, Screenshot, ToggleDebugPanel, ToggleProfileTiming, ToggleAntialiasing, Fullscreen, ToggleMute };
 
 enum class Action : uint8_t {
     Throttle, Brake, SteerLeft, SteerRight, SwitchVehicle, ThrowHeavy, ThrowLight, Fire, Camera, Wipers,
-    RainUp, RainDown, Reset, Pause, Screenshot, DebugPanel, ProfileTiming, Antialiasing, Fullscreen,
+    RainUp, RainDown, Reset, Pause, Mute, Screenshot, DebugPanel, ProfileTiming, Antialiasing, Fullscreen,
 };
-inline constexpr size_t kActionCount = 19;
+inline constexpr size_t kActionCount = 20;
 
 struct ActionInfo {
     Action action;

@@ -1,10 +1,11 @@
 #version 450 core
 #include "water/waves.glsl"
 // A splash sheet's geometry step (WaterShading): a film of thrown-up water, so its
-// normal faces the eye from either side; how thin it has stretched (kind: 0.76 at 1/x
-// of its rest thickness .. 1 at rest); and how white it is: torn patches fixed in the
-// film (they stretch with it), more of them high up and where it has stretched thin;
-// and how opaque it is, fading out towards its torn edges.
+// normal faces the eye from either side; how thick it is (kind: 0.76 at 1/x of its rest
+// thickness .. 1 at rest); how white; and how opaque, fading out only at its most
+// tattered edges. A real crown or jet is clear water: thin, seen through, bright where
+// it faces the sun or the sky at a grazing angle, white only at its rim, where the film
+// has rolled up into a thick beaded edge that breaks into drops, and where it tears.
 in vec3 v_world_pos;
 in vec3 v_normal;
 in vec2 v_cell;
@@ -23,16 +24,19 @@ void main() {
     // swells several vertices wide; a ripple per vertex made the film read as facets.
     vec2 wobble = vec2(foam_noise(v_cell * 0.18 + 3.1), foam_noise(v_cell * 0.18 + 7.7)) - 0.5;
     n = normalize(n + 0.35 * vec3(wobble.x, 0.0, wobble.y));
-    float height = v_world_pos.y - u_sea_level;
     float stretch = max(v_stretch, 1.0);
-    // Clear where the film is thick, white where it has stretched thin towards the rim
-    // and where it has begun to tear (its cover), in streaks fixed in the film.
+    // The rim: the film's free edge (cover: the share of a vertex's triangles drawn, under
+    // 1 along the edge and round tears), beaded where the sheet gathers into drops.
+    float rim = 1.0 - smoothstep(0.55, 0.92, v_cover);
+    float beads = smoothstep(0.35, 0.7, foam_noise(v_cell * 0.9 + 11.3));
+    // Torn: stretched nearly to tearing point, in streaks fixed in the film.
     float patches = foam_noise(v_cell * 0.3) * 0.65 + foam_noise(v_cell * 0.8) * 0.35;
-    float whiteness = u_foam * (0.1 + 0.15 * smoothstep(0.2, 1.5, height) + 0.3 * smoothstep(0.5, 0.85, patches) +
-                                0.45 * smoothstep(2.0, 8.0, stretch) + 0.3 * (1.0 - smoothstep(0.5, 1.0, v_cover)));
+    float torn = smoothstep(40.0, 130.0, stretch) * (0.3 + 0.5 * smoothstep(0.5, 0.85, patches));
+    // Where the sheet or the jet meets the sea it churns the surface: a collar of foam.
+    float collar = (1.0 - smoothstep(0.0, 0.06, v_world_pos.y - u_sea_level)) * (0.3 + 0.4 * beads);
+    float whiteness = u_foam * (rim * (0.6 + 0.4 * beads) + torn + collar);
     o_normal = vec4(n, 1.0);
-    // The film thins out to nothing towards a torn or ragged edge rather than ending in
-    // a hard polygon outline.
-    float opacity = smoothstep(0.15, 1.0, v_cover);
-    o_kind = vec4(0.76 + 0.24 / stretch, clamp(whiteness, 0.0, 0.9), opacity, 1.0);
+    float opacity = smoothstep(0.1, 0.35, v_cover);
+    float thickness = clamp(1.0 / stretch + rim, 0.0, 1.0);  // the rim rolls up thick
+    o_kind = vec4(0.76 + 0.24 * thickness, clamp(whiteness, 0.0, 0.95), opacity, 1.0);
 }

@@ -13,6 +13,13 @@ struct Pose {
     float pitch_rad = 0.0f;    // nose up positive
     float roll_rad = 0.0f;     // leaning right positive
 
+    template <class Archive> void describe(Archive& ar) {
+        ar.vec(position);
+        ar.f32(heading_rad);
+        ar.f32(pitch_rad);
+        ar.f32(roll_rad);
+    }
+
     glm::vec3 forward_flat() const {
         float s, c;
         det::sincos(heading_rad, s, c);

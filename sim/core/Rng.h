@@ -52,6 +52,11 @@ public:
     }
     uint64_t state() const { return state_; }
     uint64_t increment() const { return inc_; }
+    // Back to a saved state (a snapshot restored).
+    void restore(uint64_t state, uint64_t increment) {
+        state_ = state;
+        inc_ = increment;
+    }
 
 private:
     uint64_t state_ = 0;

@@ -7,7 +7,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "sim/core/Hash.h"
 #include "sim/dust/DustAccumulation.h"
 #include "sim/objects/ThrownObjects.h"
 #include "sim/weapon/Weapon.h"
@@ -124,11 +123,5 @@ float DustField::amount_near(glm::vec3 p) const {
     return pos.empty() ? 0.0f : amounts_[best];
 }
 
-uint64_t DustField::hash() const {
-    Hasher h;
-    h.u64(revision_);
-    h.u64(hash_words(amounts_.data(), amounts_.size() * sizeof(float)));
-    return h.value();
-}
 
 }  // namespace sim

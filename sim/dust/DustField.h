@@ -12,14 +12,14 @@
 
 #include "sim/dust/DustDesc.h"
 #include "sim/dust/DustSurface.h"
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
 class ThrownObjects;
 class Weapon;
 
-class DustField final : public Subsystem {
+class DustField final : public DescribedSubsystem<DustField> {
 public:
     // Throws std::invalid_argument naming the parameter or prop that cannot be used.
     explicit DustField(const DustDesc& desc);
@@ -28,7 +28,10 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.u64(revision_);
+        ar.words_digest(amounts_);
+    }
 
     const DustDesc& desc() const { return desc_; }
     const DustSurface& surface() const { return surface_; }

@@ -8,7 +8,6 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "sim/core/Hash.h"
 #include "sim/fluid/FluidScenes.h"
 #include "sim/objects/ThrownObjects.h"
 #include "sim/vehicle/Boat.h"
@@ -125,15 +124,5 @@ std::vector<Aabb> tank_walls(const FluidTankDesc& desc, glm::vec3 spot) {
     };
 }
 
-uint64_t FluidTank::hash() const {
-    Hasher h;
-    h.vec(origin_prev_[0]);
-    h.vec(origin_prev_[1]);
-    h.u32(ticks_);
-    h.i32(objects_inside_);
-    h.u32(calm_ticks_);
-    h.u32(asleep_ ? 1u : 0u);
-    return hash_combine(h.value(), fluid_.hash());
-}
 
 }  // namespace sim

@@ -10,14 +10,14 @@
 
 #include "sim/fluid/ParticleFluid.h"
 #include "sim/world/LevelDesc.h"
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
 class Boat;
 class ThrownObjects;
 
-class FluidTank final : public Subsystem {
+class FluidTank final : public DescribedSubsystem<FluidTank> {
 public:
     // Where the tank sits on the boat, in the boat's model space (floor centre); a tank
     // longer than about 1.2 m reaches into the cabin.
@@ -30,7 +30,16 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.vec(origin_prev_[0]);
+        ar.vec(origin_prev_[1]);
+        ar.u32(ticks_);
+        ar.i32(objects_inside_);
+        ar.u32(calm_ticks_);
+        ar.boolean(asleep_);
+        ar.nested(fluid_);
+        ar.unhashed(tank_to_world_);
+    }
 
     const ParticleFluid& fluid() const { return fluid_; }
     const FluidTankDesc& desc() const { return desc_; }

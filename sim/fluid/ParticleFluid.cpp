@@ -6,7 +6,6 @@
 #include <string>
 
 #include "sim/core/Float4.h"
-#include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
 
 namespace sim {
@@ -396,10 +395,5 @@ void ParticleFluid::step(float dt, glm::vec3 acceleration, const std::vector<Flu
     x_.swap(pred_);
 }
 
-uint64_t ParticleFluid::hash() const {
-    uint64_t h = hash_words(x_.data(), x_.size() * sizeof(glm::vec3), 0x464c554944ull);
-    h = hash_words(v_.data(), v_.size() * sizeof(glm::vec3), h);
-    return hash_words(counts_.data(), counts_.size() * sizeof(uint16_t), h);
-}
 
 }  // namespace sim

@@ -14,6 +14,7 @@
 #include <glm/vec4.hpp>
 
 #include "sim/core/JobPool.h"
+#include "sim/core/StateArchive.h"
 
 namespace sim {
 
@@ -64,7 +65,13 @@ public:
     float rest_density() const { return rest_density_; }
     // Mean density over rest density of the particles with a full neighbourhood.
     float mean_body_density_ratio() const;
-    uint64_t hash() const;
+    uint64_t hash() const { return hash_state(*this); }
+    // Positions, velocities and neighbour counts; the rest is rebuilt by each step.
+    template <class Archive> void describe(Archive& ar) {
+        ar.words(x_, 0x464c554944ull);
+        ar.words_chained(v_);
+        ar.words_chained(counts_);
+    }
 
 private:
     static constexpr int kMaxNeighbours = 64;

@@ -52,12 +52,5 @@ void Course::advance(glm::vec2 from, glm::vec2 to, uint64_t ticks) {
     next_ = (next_ + 1) % posts_.size();
 }
 
-void Course::hash(Hasher& h) const {
-    h.u64(next_);
-    h.u64(lap_start_.value_or(~0ull));
-    h.u32(laps_);
-    h.u64(last_.value_or(~0ull));
-    h.u64(best_.value_or(~0ull));
-}
 
 }  // namespace sim

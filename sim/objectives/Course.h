@@ -8,7 +8,6 @@
 
 #include <glm/vec2.hpp>
 
-#include "sim/core/Hash.h"
 #include "sim/objectives/ObjectiveDesc.h"
 
 namespace sim {
@@ -31,7 +30,14 @@ public:
     // The vehicle moved from -> to during the step that brings the world's tick count
     // to `ticks` (World::tick() once the step is done).
     void advance(glm::vec2 from, glm::vec2 to, uint64_t ticks);
-    void hash(Hasher& h) const;
+    // The lap state (the gates are the level's).
+    template <class Archive> void describe(Archive& ar) {
+        ar.u64(next_);
+        ar.optional_u64(lap_start_);
+        ar.u32(laps_);
+        ar.optional_u64(last_);
+        ar.optional_u64(best_);
+    }
 
     const CourseDesc& desc() const { return desc_; }
     const GatePosts& posts(size_t gate) const { return posts_[gate]; }
@@ -46,7 +52,7 @@ public:
 private:
     CourseDesc desc_;
     std::vector<GatePosts> posts_;
-    size_t next_ = 0;
+    uint64_t next_ = 0;
     std::optional<uint64_t> lap_start_;  // the world's tick count when gate 0 was crossed
     uint32_t laps_ = 0;
     std::optional<uint64_t> last_, best_;

@@ -12,7 +12,7 @@
 #include "sim/objectives/Course.h"
 #include "sim/objectives/ObjectiveDesc.h"
 #include "sim/objectives/Targets.h"
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
@@ -21,7 +21,7 @@ class Boat;
 class ThrownObjects;
 class Weapon;
 
-class Objectives final : public Subsystem {
+class Objectives final : public DescribedSubsystem<Objectives> {
 public:
     // The vehicles' positions on the ground at the start: the first move is from there.
     Objectives(const ObjectivesDesc& desc, glm::vec2 car_xz, glm::vec2 boat_xz);
@@ -30,7 +30,12 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        for (Course& c : courses_) ar.fields(c);  // as many as the level has
+        ar.fields(targets_);
+        ar.vec(car_xz_);
+        ar.vec(boat_xz_);
+    }
 
     const std::vector<Course>& courses() const { return courses_; }
     const Targets& targets() const { return targets_; }
@@ -40,6 +45,7 @@ public:
 private:
     std::vector<Course> courses_;
     Targets targets_;
+    std::vector<glm::vec3> target_positions_;  // for the tick report
     glm::vec2 car_xz_, boat_xz_;  // as of the last tick
 
     // Connected at assembly (connect).

@@ -52,12 +52,6 @@ void Targets::hit_by(const std::vector<ThrownObject>& objects, const std::vector
     }
 }
 
-void Targets::hash(Hasher& h) const {
-    for (const TargetState& t : states_) {
-        h.u32(uint32_t(t.hit_by));
-        h.u64(t.hit_at_ticks);
-    }
-}
 
 size_t Targets::hit_count() const {
     size_t n = 0;

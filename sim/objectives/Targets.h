@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "sim/core/Hash.h"
 #include "sim/objectives/ObjectiveDesc.h"
 
 namespace sim {
@@ -27,7 +26,13 @@ public:
 
     // This tick's objects and shots against the targets not hit yet.
     void hit_by(const std::vector<ThrownObject>& objects, const std::vector<Shot>& shots, uint64_t ticks);
-    void hash(Hasher& h) const;
+    // Which were hit, by what and when (the targets are the level's).
+    template <class Archive> void describe(Archive& ar) {
+        for (TargetState& t : states_) {
+            ar.enum32(t.hit_by);
+            ar.u64(t.hit_at_ticks);
+        }
+    }
 
     const std::vector<TargetState>& states() const { return states_; }
     size_t hit_count() const;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/core/Hash.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
@@ -162,20 +161,5 @@ void ThrownObjects::step(StepContext& ctx) {
                 WaterEntry{o.entry_position, o.entry_velocity, o.radius_m, o.mass_kg, o.sinks()});
 }
 
-uint64_t ThrownObjects::hash() const {
-    Hasher h;
-    h.u32(uint32_t(objects_.size()));
-    for (const ThrownObject& o : objects_) {
-        h.vec(o.position);
-        h.vec(o.velocity);
-        h.f32(o.radius_m);
-        h.f32(o.density_kgm3);
-        h.u32(o.age_ticks);
-        h.u32(uint32_t(o.in_water));
-        h.f32(o.water_velocity.x);
-        h.f32(o.water_velocity.y);
-    }
-    return h.value();
-}
 
 }  // namespace sim

@@ -7,7 +7,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
@@ -30,6 +30,20 @@ struct ThrownObject {
     // the surface slope it has felt since it got wet; its drag is against this.
     glm::vec2 water_velocity{0.0f};
     bool sinks() const { return density_kgm3 > 1000.0f; }
+
+    template <class Archive> void describe(Archive& ar) {
+        ar.vec(position);
+        ar.vec(velocity);
+        ar.f32(radius_m);
+        ar.f32(density_kgm3);
+        ar.u32(age_ticks);
+        ar.boolean(in_water);
+        ar.vec(water_velocity);
+        ar.unhashed(mass_kg);
+        ar.unhashed(entered_this_tick);
+        ar.unhashed(entry_position);
+        ar.unhashed(entry_velocity);
+    }
 };
 
 struct ThrowKind {
@@ -38,7 +52,7 @@ struct ThrowKind {
     float speed_mps;  // launch speed relative to the thrower
 };
 
-class ThrownObjects final : public Subsystem {
+class ThrownObjects final : public DescribedSubsystem<ThrownObjects> {
 public:
     static constexpr size_t kMaxObjects = 32;  // the oldest goes when a new one is thrown
     static constexpr ThrowKind kHeavy{0.22f, 2600.0f, 11.0f};  // a stone
@@ -48,7 +62,10 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.size32(objects_);
+        for (ThrownObject& o : objects_) ar.fields(o);
+    }
 
     // Adds an object; the thrower's position, facing and velocity set its launch.
     void launch(const ThrowKind& kind, glm::vec3 from, glm::vec3 forward, glm::vec3 carrier_velocity);

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
@@ -77,18 +76,5 @@ void CameraRig::step(StepContext& ctx) {
     }
 }
 
-uint64_t CameraRig::hash() const {
-    Hasher h;
-    h.vec(view_.eye);
-    h.vec(view_.target);
-    h.vec(view_.up);
-    h.f32(view_.fov_y_deg);
-    h.vec(chase_eye_);
-    h.vec(chase_target_);
-    h.f32(reversing_s_);
-    h.f32(swing_);
-    h.u32(looking_back_ ? 1u : 0u);
-    return h.value();
-}
 
 }  // namespace sim

@@ -4,7 +4,7 @@
 // replays reproduce every frame exactly.
 #include <glm/vec3.hpp>
 
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
@@ -31,7 +31,7 @@ struct CameraRigParams {
     float driver_fov_deg = 70.0f;
 };
 
-class CameraRig final : public Subsystem {
+class CameraRig final : public DescribedSubsystem<CameraRig> {
 public:
     explicit CameraRig(CameraRigParams params = {});
 
@@ -39,7 +39,18 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.vec(view_.eye);
+        ar.vec(view_.target);
+        ar.vec(view_.up);
+        ar.f32(view_.fov_y_deg);
+        ar.vec(chase_eye_);
+        ar.vec(chase_target_);
+        ar.f32(reversing_s_);
+        ar.f32(swing_);
+        ar.boolean(looking_back_);
+        ar.unhashed(initialised_);
+    }
 
     const CameraView& view() const { return view_; }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "sim/core/Hash.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
 #include "sim/world/World.h"
@@ -44,15 +43,5 @@ DriveInput Player::drive_input(Vehicle v) const {
     return DriveInput{0.0f, 1.0f, 0.0f, true};
 }
 
-uint64_t Player::hash() const {
-    Hasher h;
-    h.u32(uint32_t(vehicle_) | uint32_t(view_) << 8 | uint32_t(wipers_) << 16);
-    h.f32(rain_intensity_);
-    h.f32(controls_.throttle);
-    h.f32(controls_.brake);
-    h.f32(controls_.steer);
-    h.u32(uint32_t(throw_heavy_) | uint32_t(throw_light_) << 1 | uint32_t(fire_) << 2 | uint32_t(reset_) << 3);
-    return h.value();
-}
 
 }  // namespace sim

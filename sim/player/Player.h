@@ -3,7 +3,7 @@
 // and this tick's one-shot actions for the subsystems after it.
 #include <cstdint>
 
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
@@ -21,7 +21,7 @@ struct DriveInput {
     bool parked = false;    // nobody aboard: hold still, never reverse
 };
 
-class Player final : public Subsystem {
+class Player final : public DescribedSubsystem<Player> {
 public:
     static constexpr float kSwitchDistance_m = 18.0f;  // from the road by the pier to the boat
     static constexpr float kRainStep = 0.25f;
@@ -32,7 +32,15 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.pack8(vehicle_, view_, wipers_);
+        ar.f32(rain_intensity_);
+        ar.f32(controls_.throttle);
+        ar.f32(controls_.brake);
+        ar.f32(controls_.steer);
+        ar.unhashed(controls_.parked);
+        ar.flags(throw_heavy_, throw_light_, fire_, reset_);
+    }
 
     Vehicle vehicle() const { return vehicle_; }
     ViewMode view() const { return view_; }

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Car.h"
@@ -121,7 +120,10 @@ void RainSim::step(StepContext& ctx) {
         speed = car_->speed_mps();
         forces = forces_for(speed, car_->accel_body_mps2(), g);
     }
+    const double added_before = ledger_.added_mg;
     advance(intensity, wipers, speed, forces, ctx.dt);
+    ctx.world.report().glass_drops = landed_;
+    ctx.world.report().glass_drop_mg = float(ledger_.added_mg - added_before);
 }
 
 void RainSim::advance(float intensity, WiperMode wipers, float car_speed_mps, const RainForces& forces, float dt) {
@@ -191,6 +193,7 @@ void RainSim::kill_drop(size_t i) {
 }
 
 void RainSim::rain(float intensity, float car_speed_mps, float dt) {
+    landed_ = 0;
     if (intensity <= 0.0f) return;
     const float area = glass_.width_m() * glass_.height_m();
     const float rate = intensity * p_.drops_per_m2_s * area * (1.0f + p_.speed_gain_per_mps * std::fabs(car_speed_mps));
@@ -202,6 +205,7 @@ void RainSim::rain(float intensity, float car_speed_mps, float dt) {
         if (int(drops_.size()) >= p_.max_drops && cell_drop_[size_t(glass_.cell_of(pos))] < 0) continue;  // full
         new_drop(pos, mass, 0);
         ledger_.added_mg += mass;
+        ++landed_;
     }
 }
 
@@ -440,20 +444,5 @@ double RainSim::mass_on_glass_mg() const {
     return m;
 }
 
-uint64_t RainSim::hash() const {
-    Hasher h;
-    h.u64(rng_.state());
-    h.u64(tick_);
-    h.f32(motor_.phase());
-    h.f32(motor_.pause_s());
-    for (const WiperBlade& b : blades_) {
-        h.f32(b.angle_rad());
-        h.f32(b.previous_rad());
-    }
-    h.bytes(&ledger_, sizeof ledger_);
-    uint64_t v = hash_combine(h.value(), hash_words(drops_.data(), drops_.size() * sizeof(RainDrop)));
-    v = hash_combine(v, hash_words(particles_.data(), particles_.size() * sizeof(WaterParticle)));
-    return hash_combine(v, hash_words(wet_tick_.data(), wet_tick_.size() * sizeof(uint32_t)));
-}
 
 }  // namespace sim

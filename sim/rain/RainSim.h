@@ -20,7 +20,7 @@
 #include "sim/rain/WaterParticle.h"
 #include "sim/rain/WiperBlade.h"
 #include "sim/rain/WiperMotor.h"
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
@@ -55,7 +55,7 @@ struct RainForces {
     glm::vec3 air{0.0f};
 };
 
-class RainSim final : public Subsystem {
+class RainSim final : public DescribedSubsystem<RainSim> {
 public:
     // Throws std::invalid_argument naming the parameter for bad glass or parameters.
     RainSim(const RainParams& params, std::vector<glm::vec3> glass_lower, std::vector<glm::vec3> glass_upper,
@@ -65,7 +65,17 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.rng(rng_);
+        ar.u64(tick_);
+        ar.fields(motor_);
+        for (WiperBlade& b : blades_) ar.fields(b);
+        ar.raw(ledger_);
+        ar.words(drops_);
+        ar.words(particles_);
+        ar.words(wet_tick_);
+        ar.unhashed(cell_drop_);  // which drop each cell holds: follows from drops_
+    }
 
     // One tick without a world: tests and the benchmark drive it directly.
     void advance(float intensity, WiperMode wipers, float car_speed_mps, const RainForces& forces, float dt);
@@ -114,6 +124,7 @@ private:
     std::vector<uint32_t> wet_tick_;     // tick + 1 a drop last ran into the cell, 0 never
     std::vector<uint8_t> heavy_;         // particles_to_grid: the cell's drop defers conversions
     RainLedger ledger_;
+    uint32_t landed_ = 0;                // drops that reached the glass this tick (tick report; not hashed)
     uint64_t tick_ = 0;
     float particle_r_m_;
     float hold_ref_;                     // what holds a slide-mass drop, m/s^2

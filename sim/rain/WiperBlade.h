@@ -44,6 +44,13 @@ public:
     glm::vec2 direction() const { return direction_; }
     glm::vec2 previous_direction() const { return previous_direction_; }
     // +1 turning counter-clockwise this tick, -1 clockwise, 0 still.
+    template <class Archive> void describe(Archive& ar) {
+        ar.f32(angle_rad_);
+        ar.f32(previous_rad_);
+        ar.unhashed(direction_);
+        ar.unhashed(previous_direction_);
+    }
+
     float turning() const { return angle_rad_ > previous_rad_ ? 1.0f : angle_rad_ < previous_rad_ ? -1.0f : 0.0f; }
 
 private:

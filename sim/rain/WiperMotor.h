@@ -27,6 +27,11 @@ public:
     bool parked() const { return phase_ == 0.0f; }
     const WiperMotorParams& params() const { return p_; }
 
+    template <class Archive> void describe(Archive& ar) {
+        ar.f32(phase_);
+        ar.f32(pause_s_);
+    }
+
 private:
     WiperMotorParams p_;
     float phase_ = 0.0f;

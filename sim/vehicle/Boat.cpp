@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/vehicle/Contact.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/World.h"
@@ -43,7 +42,11 @@ void Boat::step(StepContext& ctx) {
     if (player.resets() && player.vehicle() == Vehicle::Boat) reset(ctx.world.terrain());
     DriveInput in = player.drive_input(Vehicle::Boat);
     float h = ctx.dt / kSubsteps;
+    touch_impulse_ns_ = 0.0f;
     for (int i = 0; i < kSubsteps; ++i) substep(in, ctx.world, h);
+    if (touch_impulse_ns_ > 0.0f)
+        ctx.world.report().contacts.push_back(
+            {ContactBody::Boat, pose_.position + glm::vec3(touch_offset_.x, 0.0f, touch_offset_.y), touch_impulse_ns_});
 }
 
 void Boat::substep(const DriveInput& in, const World& world, float h) {
@@ -141,7 +144,14 @@ void Boat::touch(glm::vec2 offset, glm::vec2 normal) {
     glm::vec3 w = velocity();
     const float yaw_inertia = p_.mass_kg * (p_.length_m * p_.length_m + p_.beam_m * p_.beam_m) / 12.0f;
     PlanarBody body{{w.x, w.z}, r_, p_.mass_kg, yaw_inertia};
+    const glm::vec2 before = body.velocity;
     sim::touch(body, offset, normal, kFender);
+    // The impulse along the normal, from the change of momentum it made.
+    const float impulse = p_.mass_kg * ((body.velocity.x - before.x) * normal.x + (body.velocity.y - before.y) * normal.y);
+    if (impulse > touch_impulse_ns_) {
+        touch_impulse_ns_ = impulse;
+        touch_offset_ = offset;
+    }
     u_ = body.velocity.x * fwd.x + body.velocity.y * fwd.z;
     v_ = body.velocity.x * left.x + body.velocity.y * left.z;
     r_ = body.yaw_rate;
@@ -192,14 +202,5 @@ void Boat::reset(const Terrain& terrain) {
     u_ = v_ = r_ = heave_rate_ = pitch_rate_ = roll_rate_ = 0.0f;
 }
 
-uint64_t Boat::hash() const {
-    Hasher hs;
-    hs.vec(pose_.position);
-    hs.f32(pose_.heading_rad);
-    hs.f32(pose_.pitch_rad);
-    hs.f32(pose_.roll_rad);
-    for (float f : {u_, v_, r_, heave_rate_, pitch_rate_, roll_rate_}) hs.f32(f);
-    return hs.value();
-}
 
 }  // namespace sim

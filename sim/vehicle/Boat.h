@@ -4,7 +4,7 @@
 #include "sim/core/Pose.h"
 #include "sim/player/Player.h"
 #include "sim/world/LevelDesc.h"
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
@@ -26,7 +26,7 @@ struct BoatParams {
     float min_depth_m = 0.7f;       // grounds in shallower water
 };
 
-class Boat final : public Subsystem {
+class Boat final : public DescribedSubsystem<Boat> {
 public:
     Boat(const Spawn& spawn, BoatParams params = {});
     // Set down in any attitude (a boat dropped in, or knocked over by a wave), at rest.
@@ -36,7 +36,10 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.fields(pose_);
+        for (float* f : {&u_, &v_, &r_, &heave_rate_, &pitch_rate_, &roll_rate_}) ar.f32(*f);
+    }
 
     const Pose& pose() const { return pose_; }
     glm::vec3 position() const { return pose_.position; }
@@ -62,6 +65,9 @@ private:
     Pose pose_;
     float u_ = 0.0f, v_ = 0.0f, r_ = 0.0f;  // forward, leftward speed; yaw rate
     float heave_rate_ = 0.0f, pitch_rate_ = 0.0f, roll_rate_ = 0.0f;
+    // This tick's hardest contact, for the tick report only (not state, not hashed).
+    float touch_impulse_ns_ = 0.0f;
+    glm::vec2 touch_offset_{0.0f};
 
     // Connected at assembly (connect).
     const Player* player_ = nullptr;

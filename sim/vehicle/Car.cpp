@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/vehicle/Contact.h"
 #include "sim/world/Terrain.h"
 #include "sim/world/World.h"
@@ -49,8 +48,12 @@ void Car::step(StepContext& ctx) {
     // Reverse engages only from (nearly) standing still, decided once per tick, so
     // braking to a stop never carries on into reverse within the same tick.
     bool reverse = in.brake > 0.0f && in.throttle == 0.0f && !in.parked && u_ <= 0.05f;
+    touch_impulse_ns_ = 0.0f;
     for (int i = 0; i < kSubsteps; ++i) substep(in, reverse, terrain, h);
     follow_ground(terrain);
+    if (touch_impulse_ns_ > 0.0f)
+        ctx.world.report().contacts.push_back(
+            {ContactBody::Car, pose_.position + glm::vec3(touch_offset_.x, 0.0f, touch_offset_.y), touch_impulse_ns_});
     accel_ = {(u_ - u0) / ctx.dt, (v_ - v0) / ctx.dt + u_ * r_};
     wheel_spin_ = std::fmod(wheel_spin_ + u_ * ctx.dt / 0.33f, 6.2831853f);
 }
@@ -218,6 +221,10 @@ void Car::touch(glm::vec2 offset, glm::vec2 normal) {
     float into = speed_along(n);
     if (into >= 0.0f) return;
     float j = -(1.0f + kScrape.restitution) * into / inverse_mass(n);
+    if (j > touch_impulse_ns_) {
+        touch_impulse_ns_ = j;
+        touch_offset_ = offset;
+    }
     push(n, j);
     float jt = std::clamp(-speed_along(t) / inverse_mass(t), -kScrape.friction * j, kScrape.friction * j);
     push(t, jt);
@@ -294,19 +301,5 @@ void Car::follow_ground(const Terrain& terrain) {
     pose_.roll_rad = det::atan2(left - right, kTrack_m);
 }
 
-uint64_t Car::hash() const {
-    Hasher hs;
-    hs.vec(pose_.position);
-    hs.f32(pose_.heading_rad);
-    hs.f32(pose_.pitch_rad);
-    hs.f32(pose_.roll_rad);
-    hs.f32(u_);
-    hs.f32(v_);
-    hs.f32(r_);
-    hs.f32(steer_);
-    hs.f32(wheel_spin_);
-    hs.f32(scraping_s_);
-    return hs.value();
-}
 
 }  // namespace sim

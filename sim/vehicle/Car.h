@@ -4,7 +4,7 @@
 #include "sim/core/Pose.h"
 #include "sim/player/Player.h"
 #include "sim/world/LevelDesc.h"
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
@@ -31,7 +31,7 @@ struct CarParams {
     float height_m = 1.45f;
 };
 
-class Car final : public Subsystem {
+class Car final : public DescribedSubsystem<Car> {
 public:
     Car(const Spawn& spawn, CarParams params = {});
 
@@ -39,7 +39,16 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.fields(pose_);
+        ar.f32(u_);
+        ar.f32(v_);
+        ar.f32(r_);
+        ar.f32(steer_);
+        ar.f32(wheel_spin_);
+        ar.f32(scraping_s_);
+        ar.unhashed(accel_);
+    }
 
     const Pose& pose() const { return pose_; }
     glm::vec3 position() const { return pose_.position; }
@@ -69,6 +78,9 @@ private:
     float steer_ = 0.0f;  // front wheel angle, rad (positive turns left)
     float wheel_spin_ = 0.0f;
     float scraping_s_ = 0.0f;  // time left of the last contact's hold on the tyres
+    // This tick's hardest contact, for the tick report only (not state, not hashed).
+    float touch_impulse_ns_ = 0.0f;
+    glm::vec2 touch_offset_{0.0f};
     glm::vec2 accel_{0.0f};
 
     // Connected at assembly (connect).

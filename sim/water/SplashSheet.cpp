@@ -7,7 +7,6 @@
 #include <string>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
 
 namespace sim {
@@ -249,21 +248,5 @@ void SplashSheet::step(float dt, const WaveGrid& grid, float sea_level_m, std::v
         }
 }
 
-uint64_t SplashSheet::hash() const {
-    // Hidden vertices carry no state that matters (a launch starts from the surface),
-    // so only the airborne ones are hashed: the mask, then their positions and speeds.
-    Hasher h;
-    h.vec(centre_);
-    h.i32(flying_);
-    uint64_t v = hash_combine(h.value(), hash_words(airborne_.data(), airborne_.size(), 13));
-    if (flying_ == 0) return v;
-    Hasher f;
-    for (size_t idx = 0; idx < airborne_.size(); ++idx)
-        if (airborne_[idx]) {
-            f.vec(pos_[idx]);
-            f.vec(vel_[idx]);
-        }
-    return hash_combine(v, f.value());
-}
 
 }  // namespace sim

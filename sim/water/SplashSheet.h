@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "sim/core/Rng.h"
+#include "sim/core/StateArchive.h"
 #include "sim/water/WaveGrid.h"
 
 namespace sim {
@@ -81,7 +82,17 @@ public:
     const std::vector<glm::vec3>& velocities() const { return vel_; }
     int airborne_count() const { return flying_; }
     const SplashSheetParams& params() const { return p_; }
-    uint64_t hash() const;
+    uint64_t hash() const { return hash_state(*this); }
+    // Hidden vertices carry no state the hash needs (a launch starts from the surface),
+    // so it takes only the airborne ones: the mask, then their positions and speeds.
+    template <class Archive> void describe(Archive& ar) {
+        ar.vec(centre_);
+        ar.i32(flying_);
+        ar.words(airborne_, 13);
+        ar.vecs_where(airborne_, pos_, vel_);
+        ar.unhashed(torn_);  // the last step's, read after it
+        ar.unhashed(tore_off_);
+    }
 
     // Vertex (i, j) rests at centre + (i - size/2, j - size/2) * spacing: the centre is a vertex.
     glm::vec2 rest_xz(int i, int j) const;

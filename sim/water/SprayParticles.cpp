@@ -6,7 +6,6 @@
 #include <string>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
 
 namespace sim {
@@ -114,10 +113,5 @@ void SprayParticles::step(float dt, const WaveGrid& grid, float sea_level_m, std
     particles_.resize(kept);
 }
 
-uint64_t SprayParticles::hash() const {
-    Hasher h;
-    h.u64(uint64_t(particles_.size()));
-    return hash_combine(h.value(), hash_words(particles_.data(), particles_.size() * sizeof(SprayParticle), 21));
-}
 
 }  // namespace sim

@@ -12,6 +12,7 @@
 
 #include "sim/core/JobPool.h"
 #include "sim/core/Rng.h"
+#include "sim/core/StateArchive.h"
 #include "sim/water/SplashSheet.h"
 #include "sim/water/WaveGrid.h"
 
@@ -44,7 +45,11 @@ public:
 
     const std::vector<SprayParticle>& particles() const { return particles_; }
     const SprayParams& params() const { return p_; }
-    uint64_t hash() const;
+    uint64_t hash() const { return hash_state(*this); }
+    template <class Archive> void describe(Archive& ar) {
+        ar.size64(particles_);
+        ar.words(particles_, 21);
+    }
 
     // Adds one droplet; false (and nothing added) when max_particles are alive.
     bool emit(const SprayParticle& p);

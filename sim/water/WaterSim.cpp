@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/weather/Weather.h"
@@ -242,22 +241,5 @@ void WaterSim::step(StepContext& ctx) {
     for (const Ripple& r : ripples_) grid_.push(r.xz, grid_.spacing(), r.depth_m);
 }
 
-uint64_t WaterSim::hash() const {
-    Hasher h;
-    h.u64(rng_.state());
-    h.u64(rng_.increment());
-    for (const SheetSlot& s : slots_) {
-        h.u64(s.started_tick);
-        h.u32(uint32_t(s.bow) | uint32_t(s.second_pending) << 1);
-        h.u32(s.ticks_since_impact);
-        h.f32(s.object_radius_m);
-        h.f32(s.momentum_kgmps);
-        h.f32(s.dip_m);
-        h.vec(s.impact);
-    }
-    uint64_t v = hash_combine(h.value(), grid_.hash());
-    for (const SplashSheet& s : sheets_) v = hash_combine(v, s.hash());
-    return hash_combine(v, spray_.hash());
-}
 
 }  // namespace sim

@@ -15,7 +15,7 @@
 #include "sim/water/WaveGrid.h"
 #include "sim/world/LevelDesc.h"
 #include "sim/world/SeaSurface.h"
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
@@ -54,7 +54,7 @@ struct SplashEvent {
     int sheet = 0;                  // index into WaterSim::sheets()
 };
 
-class WaterSim final : public Subsystem, public SeaSurface {
+class WaterSim final : public DescribedSubsystem<WaterSim>, public SeaSurface {
 public:
     // The grid's land mask comes from the level's terrain. Throws std::invalid_argument
     // naming the bound for unstable or absurd parameters.
@@ -65,7 +65,14 @@ public:
     void connect(const SubsystemLinks& links) override;
     const SeaSurface* sea_surface() const override { return this; }
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.rng_with_stream(rng_);
+        for (SheetSlot& s : slots_) ar.fields(s);  // max_sheets of them
+        ar.nested(grid_);
+        for (SplashSheet& s : sheets_) ar.nested(s);
+        ar.nested(spray_);
+        ar.unhashed(splashes_);  // this tick's, for sounds and effects
+    }
     float height_at(glm::vec2 xz) const override;  // sea level + wave height
 
     const WaveGrid& grid() const { return grid_; }
@@ -90,6 +97,16 @@ private:
         float momentum_kgmps = 0.0f;
         float dip_m = 0.0f;           // wave height at the entry right after the push
         glm::vec3 impact{0.0f};
+
+        template <class Archive> void describe(Archive& ar) {
+            ar.u64(started_tick);
+            ar.flags(bow, second_pending);
+            ar.u32(ticks_since_impact);
+            ar.f32(object_radius_m);
+            ar.f32(momentum_kgmps);
+            ar.f32(dip_m);
+            ar.vec(impact);
+        }
     };
 
     int take_sheet(uint64_t tick);  // an idle sheet, else the oldest one not on the bow

@@ -6,7 +6,6 @@
 #include <string>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/core/NumberText.h"
 #include "sim/water/WaveRow.h"
 
@@ -189,10 +188,5 @@ void WaveGrid::set_land_mask(std::vector<uint8_t> mask) {
     rebuild_coefficients();
 }
 
-uint64_t WaveGrid::hash() const {
-    uint64_t h = hash_words(cur_.data(), cur_.size() * sizeof(float), 1);
-    h = hash_combine(h, hash_words(prev_.data(), prev_.size() * sizeof(float), 2));
-    return hash_combine(h, hash_words(land_.data(), land_.size(), 3));
-}
 
 }  // namespace sim

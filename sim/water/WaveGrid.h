@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "sim/core/JobPool.h"
+#include "sim/core/StateArchive.h"
 
 namespace sim {
 
@@ -59,7 +60,14 @@ public:
     void set_land_mask(std::vector<uint8_t> mask);
     const std::vector<uint8_t>& land_mask() const { return land_; }
 
-    uint64_t hash() const;
+    uint64_t hash() const { return hash_state(*this); }
+    // The two time levels and the land (sim/core/StateArchive.h).
+    template <class Archive> void describe(Archive& ar) {
+        ar.words(cur_, 1);
+        ar.words(prev_, 2);
+        ar.words(land_, 3);
+        if constexpr (Archive::kLoading) rebuild_coefficients();
+    }
 
 private:
     void step_rows(size_t row_begin, size_t row_end);

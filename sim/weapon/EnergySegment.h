@@ -17,6 +17,15 @@ struct EnergySegment {
     float sphere_strength = 0.0f;
     float beam_strength = 0.0f;
     float radius_m = 1.0f;  // influence radius: no density beyond it
+
+    template <class Archive> void describe(Archive& ar) {
+        ar.vec(start);
+        ar.vec(direction);
+        ar.f32(length_m);
+        ar.f32(sphere_strength);
+        ar.f32(beam_strength);
+        ar.f32(radius_m);
+    }
 };
 
 }  // namespace sim

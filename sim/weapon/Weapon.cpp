@@ -5,7 +5,6 @@
 #include <optional>
 
 #include "sim/core/DetMath.h"
-#include "sim/core/Hash.h"
 #include "sim/player/Player.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
@@ -80,7 +79,8 @@ void Weapon::shape(Shot& s, float dt) const {
     }
 }
 
-void Weapon::advance(Shot& s, const World& world, float dt, std::vector<WaterEntry>& water_entries) const {
+void Weapon::advance(Shot& s, const World& world, float dt, std::vector<WaterEntry>& water_entries,
+                     std::vector<ShotReport>& impacts) const {
     const float before_d = p_.speed_mps * float(s.age_ticks) * dt;
     ++s.age_ticks;
     if (!s.hit()) {
@@ -99,9 +99,11 @@ void Weapon::advance(Shot& s, const World& world, float dt, std::vector<WaterEnt
             s.hit_age_ticks = s.age_ticks;
             s.hit_distance_m = before_d + *f * (after_d - before_d);
             const glm::vec3 at = s.origin + s.direction * s.hit_distance_m;
-            if (!into_solid && surface_at(world, at).water)
+            const bool water = !into_solid && surface_at(world, at).water;
+            if (water)
                 water_entries.push_back(
                     WaterEntry{at, s.direction * p_.speed_mps, p_.impact_radius_m, p_.impact_mass_kg, false});
+            impacts.push_back({at, into_solid ? ImpactSurface::Solid : water ? ImpactSurface::Water : ImpactSurface::Ground});
         }
     }
     shape(s, dt);
@@ -119,10 +121,13 @@ void Weapon::step(StepContext& ctx) {
         const Pose& pose = player.vehicle() == Vehicle::Car ? car_->pose() : boat_->pose();
         const glm::vec3 fwd = pose.forward_flat();
         const glm::vec3 aim = fwd * det::cos(p_.dip_rad) - glm::vec3(0.0f, det::sin(p_.dip_rad), 0.0f);
-        fire(pose.position + glm::vec3(0.0f, p_.muzzle_height_m, 0.0f) + fwd * p_.muzzle_ahead_m, aim);
+        const glm::vec3 muzzle = pose.position + glm::vec3(0.0f, p_.muzzle_height_m, 0.0f) + fwd * p_.muzzle_ahead_m;
+        fire(muzzle, aim);
+        ctx.world.report().shots_fired.push_back({muzzle, ImpactSurface::Ground});
     }
     // In shot order: the water sees the impacts in the same order every run.
-    for (Shot& s : shots_) advance(s, ctx.world, ctx.dt, ctx.world.events().water_entries);
+    for (Shot& s : shots_)
+        advance(s, ctx.world, ctx.dt, ctx.world.events().water_entries, ctx.world.report().shot_impacts);
     const uint32_t life_ticks = uint32_t(p_.life_s / ctx.dt + 0.5f);
     const uint32_t fade_ticks = uint32_t(p_.fade_s / ctx.dt + 0.5f);
     std::erase_if(shots_, [&](const Shot& s) {
@@ -130,27 +135,5 @@ void Weapon::step(StepContext& ctx) {
     });
 }
 
-uint64_t Weapon::hash() const {
-    Hasher h;
-    h.u64(rng_.state());
-    h.u32(uint32_t(shots_.size()));
-    for (const Shot& s : shots_) {
-        h.vec(s.origin);
-        h.vec(s.direction);
-        h.f32(s.phase);
-        h.u32(s.age_ticks);
-        h.u32(s.hit_age_ticks);
-        h.f32(s.hit_distance_m);
-        for (const EnergySegment& seg : s.segments) {
-            h.vec(seg.start);
-            h.vec(seg.direction);
-            h.f32(seg.length_m);
-            h.f32(seg.sphere_strength);
-            h.f32(seg.beam_strength);
-            h.f32(seg.radius_m);
-        }
-    }
-    return h.value();
-}
 
 }  // namespace sim

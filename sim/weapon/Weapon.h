@@ -12,7 +12,8 @@
 
 #include "sim/core/Rng.h"
 #include "sim/weapon/EnergySegment.h"
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
+#include "sim/world/TickReport.h"
 #include "sim/world/WorldEvents.h"
 
 namespace sim {
@@ -31,6 +32,16 @@ struct Shot {
     float hit_distance_m = 0.0f;  // from the origin along the direction, once hit
     std::array<EnergySegment, kSegments> segments{};
     bool hit() const { return hit_age_ticks != 0; }
+
+    template <class Archive> void describe(Archive& ar) {
+        ar.vec(origin);
+        ar.vec(direction);
+        ar.f32(phase);
+        ar.u32(age_ticks);
+        ar.u32(hit_age_ticks);
+        ar.f32(hit_distance_m);
+        for (EnergySegment& s : segments) ar.fields(s);
+    }
 };
 
 struct WeaponParams {
@@ -50,7 +61,7 @@ struct WeaponParams {
     float impact_mass_kg = 40.0f;
 };
 
-class Weapon final : public Subsystem {
+class Weapon final : public DescribedSubsystem<Weapon> {
 public:
     static constexpr size_t kMaxShots = 8;
 
@@ -60,7 +71,11 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.rng(rng_);
+        ar.size32(shots_);
+        for (Shot& s : shots_) ar.fields(s);
+    }
 
     void fire(glm::vec3 origin, glm::vec3 direction);
     const std::vector<Shot>& shots() const { return shots_; }
@@ -68,7 +83,9 @@ public:
 
 private:
     // Ages a shot by one tick, detects its impact and lays out its segments.
-    void advance(Shot& s, const World& world, float dt, std::vector<WaterEntry>& water_entries) const;
+    // Its impact, if any, goes to `impacts` (the tick report).
+    void advance(Shot& s, const World& world, float dt, std::vector<WaterEntry>& water_entries,
+                 std::vector<ShotReport>& impacts) const;
     void shape(Shot& s, float dt) const;
 
     WeaponParams p_;

@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "sim/core/Hash.h"
 #include "sim/player/Player.h"
 #include "sim/world/World.h"
 
@@ -60,12 +59,5 @@ void Weather::advance(float rain_intensity, float dt) {
     road_wetness_ = unit(road_wetness_ + dt * (r * kWetPerS * (1.0f - road_wetness_) - kDryPerS * (1.0f - r)));
 }
 
-uint64_t Weather::hash() const {
-    Hasher h;
-    h.f32(rain_rate_);
-    h.f32(cloud_cover_);
-    h.f32(road_wetness_);
-    return h.value();
-}
 
 }  // namespace sim

@@ -6,13 +6,13 @@
 // clear after it stops; the road wets while it rains and dries slowly after.
 #include <cstdint>
 
-#include "sim/world/Subsystem.h"
+#include "sim/world/DescribedSubsystem.h"
 
 namespace sim {
 
 class Player;
 
-class Weather final : public Subsystem {
+class Weather final : public DescribedSubsystem<Weather> {
 public:
     // Seconds for a lag to close (1 - 1/e of) a gap: first-order, stepped per tick.
     static constexpr float kRainRiseTime_s = 2.0f;
@@ -36,7 +36,11 @@ public:
     std::string_view name() const override { return kName; }
     void connect(const SubsystemLinks& links) override;
     void step(StepContext& ctx) override;
-    uint64_t hash() const override;
+    template <class Archive> void describe(Archive& ar) {
+        ar.f32(rain_rate_);
+        ar.f32(cloud_cover_);
+        ar.f32(road_wetness_);
+    }
 
     // One tick of `dt` seconds towards `rain_intensity` (0..1, clamped): step() reads it
     // from the player.

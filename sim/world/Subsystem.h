@@ -1,6 +1,7 @@
 #pragma once
 // One deterministic part of the world (car, boat, water, rain, ...). World steps its
-// subsystems in a fixed order each tick and hashes each one.
+// subsystems in a fixed order each tick and hashes each one; a snapshot saves and
+// restores each one (sim/world/WorldSnapshot.h).
 #include <cstdint>
 #include <string_view>
 
@@ -12,6 +13,8 @@ namespace sim {
 
 class World;
 class SeaSurface;
+class StateWriter;
+class StateReader;
 
 struct StepContext {
     TickInput input;     // held this tick
@@ -33,7 +36,12 @@ public:
     // others (only what its entry in the subsystem list declares).
     virtual void connect(const SubsystemLinks& links) { (void)links; }
     virtual void step(StepContext& ctx) = 0;
+    // Hash, save and restore walk one description of the state (sim/core/StateArchive.h):
+    // a subsystem derives from DescribedSubsystem, which makes all three from it.
     virtual uint64_t hash() const = 0;
+    virtual void save(StateWriter& out) const = 0;
+    // Throws SnapshotError when the bytes do not fit the description.
+    virtual void restore(StateReader& in) = 0;
     // A subsystem that simulates the sea surface returns it: the world installs it
     // for boats and objects to ride.
     virtual const SeaSurface* sea_surface() const { return nullptr; }

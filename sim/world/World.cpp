@@ -75,12 +75,14 @@ void World::step(TickInput input, StepObserver* observer) {
     require_float_environment();  // a few cycles a tick, against a silent desync
     input = quantise(input);
     events_.clear();
+    report_.clear();
     StepContext ctx{input, previous_, *this, jobs_, kTickSeconds, tick_};
     for (size_t i = 0; i < subsystems_.size(); ++i) {
         if (observer) observer->before(i);
         subsystems_[i]->step(ctx);
         if (observer) observer->after(i);
     }
+    report_.water_entries = events_.water_entries;
     previous_ = input;
     ++tick_;
 }

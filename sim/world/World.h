@@ -3,7 +3,9 @@
 // It is assembled from a list of subsystem entries (sim/world/SubsystemEntry.h), each
 // connected once to what it reads. step() applies one quantised TickInput; hash()
 // names every subsystem's state.
+#include <cstdint>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "sim/world/Subsystem.h"
 #include "sim/world/SubsystemEntry.h"
 #include "sim/world/Terrain.h"
+#include "sim/world/TickReport.h"
 #include "sim/world/WorldEvents.h"
 #include "sim/world/WorldHash.h"
 
@@ -55,12 +58,30 @@ public:
     // refused rather than silently diverging.
     uint64_t sim_signature() const;
 
+    // A snapshot of the whole state (sim/world/WorldSnapshot.cpp, docs/REPLAYS.md): a
+    // fresh world of the same level restored from it steps on with exactly this one's
+    // hashes. `level_hash` is the content hash of the level's files (the game loads them;
+    // the sim never sees files), stored so that another level's snapshot is refused.
+    std::vector<uint8_t> snapshot(uint64_t level_hash) const;
+    // Throws SnapshotError (sim/core/StateArchive.h) with a message saying why for a
+    // snapshot of another sim version or subsystems, or of another level (the world is
+    // left as it was), or one that is cut or corrupt (the world is then half restored:
+    // throw it away).
+    void restore(std::span<const uint8_t> snapshot, uint64_t level_hash);
+    // How many snapshots this world was restored from: a presentation cache that remembers
+    // earlier frames (previous poses, uploaded revisions) resets when it changes.
+    uint64_t restore_generation() const { return restore_generation_; }
+
     const LevelDesc& level() const { return level_; }
     const Terrain& terrain() const { return terrain_; }
     // A wave simulation in the world (Subsystem::sea_surface), else the flat sea.
     const SeaSurface& sea() const { return *sea_; }
     WorldEvents& events() { return events_; }
     const WorldEvents& events() const { return events_; }
+    // What the last step did, for readers outside the sim (TickReport.h): subsystems
+    // write it and never read it; it is not hashed.
+    TickReport& report() { return report_; }
+    const TickReport& report() const { return report_; }
     TickInput last_input() const { return previous_; }
     JobPool& jobs() { return jobs_; }
 
@@ -84,9 +105,11 @@ private:
     const SeaSurface* sea_;
     JobPool jobs_;
     WorldEvents events_;
+    TickReport report_;
     std::vector<std::unique_ptr<Subsystem>> subsystems_;
     uint64_t tick_ = 0;
     TickInput previous_;
+    uint64_t restore_generation_ = 0;
 };
 
 }  // namespace sim

@@ -1,0 +1,49 @@
+#pragma once
+#include <cstdint>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+#include "effects/gl/Program.h"
+#include "effects/scene/Pass.h"
+
+namespace effects {
+
+// Temporal upsampling's resolve (shaders/scene/temporal.frag.glsl), at the scene's size
+// when QualitySettings::temporal is on: each frame is drawn with the projection moved by
+// a sub-pixel jitter (temporal_jitter_px, Renderer::prepare), and this pass blends the
+// tone-mapped frame with the last resolved one, reprojected through the depth from the
+// last frame's view to this one's and clamped to the range of the pixel's
+// neighbourhood (so what moved, or came into view, does not leave a ghost). Each pixel
+// has two candidates for where it was: the world's (the world taken as still) and the
+// vehicle's nearest the eye (through its last and this pose, so the car's cabin in the
+// driver's view, or the car ahead of the chase camera, keeps its history); the one
+// nearer this frame's colour is taken. Over a few
+// frames an edge's pixels take its coverage instead of all-or-nothing: the scene is
+// anti-aliased before the upscale enlarges it, and a small scene's stairs do not show.
+// The neighbourhood is read as five texels (the pixel and the four beside it): on
+// llvmpipe every fetch costs about as much as the arithmetic of a whole pixel.
+class TemporalPass final : public Pass {
+public:
+    TemporalPass();
+    std::string_view name() const override { return "temporal"; }
+    void render(const FrameContext& frame) override;
+    void register_params(ParamRegistry& params) override;
+
+private:
+    gl::Program program_;
+    float current_weight_ = 0.15f;  // of this frame in the blend: about the last 7 frames kept
+    bool has_history_ = false;
+    uint64_t history_generation_ = 0;  // SceneTargets' generation the history was drawn at
+    glm::mat4 last_view_proj_{1.0f};   // the last frame's, without its jitter
+    glm::mat4 last_vehicle_{1.0f};     // the last frame's pose of the vehicle nearest the eye
+    bool has_vehicle_ = false;
+};
+
+// The sub-pixel offset (in the scene's pixels, each axis in [-0.5, 0.5)) of the
+// projection for the `frame`th frame drawn with temporal upsampling: the Halton (2, 3)
+// sequence's first eight points, again and again, so that every eight frames sample a
+// pixel evenly.
+glm::vec2 temporal_jitter_px(uint64_t frame);
+
+}  // namespace effects

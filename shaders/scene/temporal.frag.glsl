@@ -1,0 +1,46 @@
+#version 450 core
+// Temporal upsampling's resolve (TemporalPass), at the scene's size: this frame's
+// tone-mapped pixel (drawn with a sub-pixel jitter) blended into the last resolved frame,
+// read where this pixel's point was in it and clamped to the range of this pixel and the
+// four beside it, so that what moved or came into view leaves no ghost. Blended in the
+// display's encoding: what it smooths is edges, where that is what the eye compares.
+uniform sampler2D u_current;  // tone-mapped, this frame (texels)
+uniform sampler2D u_history;  // the last resolved frame, bilinear
+uniform sampler2D u_depth;    // this frame's window depth
+uniform mat4 u_reproject;     // this frame's NDC -> the last frame's clip space, the world still
+uniform mat4 u_reproject_vehicle;  // the same for a point on the vehicle nearest the eye
+uniform float u_current_weight;  // 1: no history (the first frame, a resize)
+layout(location = 0) out vec4 o_colour;
+
+void main() {
+    const ivec2 p = ivec2(gl_FragCoord.xy);
+    const ivec2 last = textureSize(u_current, 0) - 1;
+    const vec3 c = texelFetch(u_current, p, 0).rgb;
+    const vec3 l = texelFetch(u_current, max(p - ivec2(1, 0), ivec2(0)), 0).rgb;
+    const vec3 r = texelFetch(u_current, min(p + ivec2(1, 0), last), 0).rgb;
+    const vec3 d = texelFetch(u_current, max(p - ivec2(0, 1), ivec2(0)), 0).rgb;
+    const vec3 u = texelFetch(u_current, min(p + ivec2(0, 1), last), 0).rgb;
+    const vec3 lo = min(c, min(min(l, r), min(d, u)));
+    const vec3 hi = max(c, max(max(l, r), max(d, u)));
+
+    const float depth = texelFetch(u_depth, p, 0).r;
+    const vec2 ndc = (gl_FragCoord.xy / vec2(last + 1)) * 2.0 - 1.0;
+    const vec4 point = vec4(ndc, depth * 2.0 - 1.0, 1.0);
+    vec4 before = u_reproject * point;
+    vec2 uv = (before.xy / before.w) * 0.5 + 0.5;
+    vec3 h = texture(u_history, uv).rgb;
+    // Two candidates for where the point was (the world's, the vehicle's): the one whose
+    // history is nearer this frame's colour.
+    const vec4 before_vehicle = u_reproject_vehicle * point;
+    const vec2 uv_vehicle = (before_vehicle.xy / before_vehicle.w) * 0.5 + 0.5;
+    const vec3 h_vehicle = texture(u_history, uv_vehicle).rgb;
+    if (dot(h_vehicle - c, h_vehicle - c) < dot(h - c, h - c)) {
+        before = before_vehicle;
+        uv = uv_vehicle;
+        h = h_vehicle;
+    }
+    h = clamp(h, lo, hi);
+    // Off the last frame's edge there is nothing to blend with.
+    const bool inside = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) && before.w > 0.0;
+    o_colour = vec4(mix(h, c, inside ? u_current_weight : 1.0), 1.0);
+}
