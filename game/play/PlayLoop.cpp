@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "effects/gl/Gl.h"
+#include "game/audio/SettingsVolumes.h"
 #include "game/capture/ImageFiles.h"
 #include "game/capture/Readback.h"
 #include "game/play/FixedStepClock.h"
@@ -63,6 +64,7 @@ PlayLoop::PlayLoop(GameSession& session, Screen& screen, LoopOptions options)
     // GL_TIME_ELAPSED queries read ~0 on llvmpipe: measure one pass a frame exactly.
     renderer_->set_timing(effects::gl::TimingMode::Sampled);
     set_quality(options.quality);
+    if (options_.sound) options_.sound->set_volumes(mixer_volumes(settings_.volume));
 }
 
 void PlayLoop::set_quality(QualityChoice quality) {
@@ -228,6 +230,7 @@ void PlayLoop::change_settings(const Settings& after) {
     renderer_->set_antialiasing(after.fxaa);
     if (after.vsync != before.vsync) screen_.set_vsync(after.vsync);
     if (after.window.fullscreen != before.window.fullscreen) screen_.set_fullscreen(after.window.fullscreen);
+    if (options_.sound && !(after.volume == before.volume)) options_.sound->set_volumes(mixer_volumes(after.volume));
     if (!options_.settings_file) return;
     SettingsFile& file = *options_.settings_file;
     settings_error_.clear();
@@ -348,7 +351,8 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
         QualityChoice quality = quality_;
         Settings chosen = settings_;
         if (ui_.draw_debug_panel(*renderer_, quality, &panel_open_)) chosen.quality = quality;
-        if (options_.sound) draw_sound_panel(*options_.sound);
+        // The panel's volumes are the settings' (the menu's too): one value, saved once changed.
+        if (options_.sound) draw_sound_panel(*options_.sound, chosen.volume);
         if (!(chosen == settings_)) change_settings(chosen);
     }
     Settings edited = settings_;
