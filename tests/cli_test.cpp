@@ -102,7 +102,8 @@ protected:
 TEST_F(Cli, HelpNamesEveryCommandAndExitCode) {
     CommandResult r = run("--help");
     EXPECT_EQ(r.code, 0);
-    for (const char* w : {"play", "record", "replay", "timedemo", "bench", "--quality", "exit codes"})
+    for (const char* w : {"play", "record", "replay", "timedemo", "bench", "--quality", "exit codes",
+                          "spindrift/settings.json", "F11", "Esc the menu"})
         EXPECT_NE(r.output.find(w), std::string::npos) << w;
     // auto's render scales as the resolution controller has them (0.35..1)
     char scales[32];
@@ -111,12 +112,13 @@ TEST_F(Cli, HelpNamesEveryCommandAndExitCode) {
     EXPECT_NE(r.output.find(std::string("render scale ") + scales), std::string::npos) << r.output;
     EXPECT_EQ(run("--version").code, 0);
     EXPECT_EQ(run("fly").code, 2);
+    EXPECT_EQ(run("play --fullscreen --windowed").code, 2);
     EXPECT_EQ(run("replay x.replay --fast").code, 2);
     EXPECT_EQ(run("replay x.replay --threads 0").code, 2);
     EXPECT_EQ(run("replay x.replay --frames 1,x").code, 2);
     CommandResult group = run("bench --only nope");
     EXPECT_EQ(group.code, 2);
-    EXPECT_NE(group.output.find("play, audio)"), std::string::npos) << group.output;
+    EXPECT_NE(group.output.find("rain, play, audio)"), std::string::npos) << group.output;
 }
 
 TEST_F(Cli, RecordedReplayChecksWithAnyThreadCount) {

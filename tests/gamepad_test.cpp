@@ -70,7 +70,7 @@ TEST(Gamepad, ButtonsPressOnTheirRisingEdgeOnly) {
     now.buttons[GLFW_GAMEPAD_BUTTON_START] = GLFW_PRESS;
     game::GamepadPresses p = game::gamepad_presses(before, now);
     EXPECT_EQ(p.controls, std::vector<Control>{Control::SwitchVehicle});
-    EXPECT_EQ(p.actions, std::vector<UiAction>{UiAction::Pause});
+    EXPECT_EQ(p.actions, std::vector<UiAction>{UiAction::Menu});
     // Held down: no new press.
     p = game::gamepad_presses(now, now);
     EXPECT_TRUE(p.controls.empty());

@@ -8,6 +8,7 @@
 #include "game/play/PlayLoop.h"
 #include "game/play/PlayMode.h"
 #include "game/play/QualityChoice.h"
+#include "game/settings/KeyNames.h"
 #include "game/replay/FrameSelection.h"
 
 #define GLFW_INCLUDE_NONE
@@ -34,7 +35,7 @@ using sim::Control;
 namespace {
 
 sim::TickInput keys(std::set<int> down) {
-    return game::input_from_keys([&](int key) { return down.count(key) != 0; });
+    return game::input_from_keys(game::KeyBindings(), [&](int key) { return down.count(key) != 0; });
 }
 
 uint16_t bit(Control c) { return static_cast<uint16_t>(c); }
@@ -78,16 +79,19 @@ TEST(KeyboardInput, EachKeyFromTheHelpHoldsItsControl) {
     };
     for (auto [key, control] : expected) {
         EXPECT_EQ(keys({key}).held, bit(control)) << "GLFW key " << key;
-        EXPECT_EQ(game::control_for_key(key), control) << "GLFW key " << key;
+        EXPECT_EQ(game::control_for_key(game::KeyBindings(), key), control) << "GLFW key " << key;
     }
 }
 
 TEST(KeyboardInput, EveryControlHasAKeyAndOnlyOneBinding) {
     uint16_t seen = 0;
-    for (const game::KeyBinding& b : game::key_bindings()) {
-        EXPECT_EQ(seen & bit(b.control), 0) << "control bound twice";
-        seen |= bit(b.control);
-        EXPECT_NE(b.keys[0], 0);
+    const game::KeyBindings bindings;
+    for (const game::ActionInfo& a : game::actions()) {
+        EXPECT_NE(bindings.keys(a.action)[0], 0) << a.id;
+        EXPECT_NE(a.control.has_value(), a.ui.has_value()) << a.id;
+        if (!a.control) continue;
+        EXPECT_EQ(seen & bit(*a.control), 0) << "control bound twice";
+        seen |= bit(*a.control);
     }
     EXPECT_EQ(seen, sim::kAllControls);
 }
@@ -103,31 +107,58 @@ TEST(KeyboardInput, KeysCombine) {
 
 TEST(KeyboardInput, AllBoundKeysGiveAQuantisedInput) {
     std::set<int> all;
-    for (const game::KeyBinding& b : game::key_bindings())
-        for (int k : b.keys)
-            if (k) all.insert(k);
+    const game::KeyBindings bindings;
+    for (const game::ActionInfo& a : game::actions())
+        if (a.control)
+            for (int k : bindings.keys(a.action))
+                if (k) all.insert(k);
     sim::TickInput in = keys(all);
     EXPECT_EQ(in.held, sim::kAllControls);
     EXPECT_EQ(sim::quantise(in), in);
 }
 
 TEST(KeyboardInput, ProgramKeysAreNotControls) {
-    for (int key : {GLFW_KEY_P, GLFW_KEY_F12, GLFW_KEY_F1, GLFW_KEY_F2, GLFW_KEY_F3, GLFW_KEY_ESCAPE}) {
+    const game::KeyBindings bindings;
+    for (int key : {GLFW_KEY_P, GLFW_KEY_M, GLFW_KEY_F12, GLFW_KEY_F1, GLFW_KEY_F2, GLFW_KEY_F3, GLFW_KEY_F11,
+                    game::kKeyAltEnter, GLFW_KEY_ESCAPE}) {
         EXPECT_EQ(keys({key}).held, 0) << "GLFW key " << key;
-        EXPECT_FALSE(game::control_for_key(key).has_value()) << "GLFW key " << key;
-        EXPECT_TRUE(game::ui_action_for_key(key).has_value()) << "GLFW key " << key;
+        EXPECT_FALSE(game::control_for_key(bindings, key).has_value()) << "GLFW key " << key;
+        EXPECT_TRUE(game::ui_action_for_key(bindings, key).has_value()) << "GLFW key " << key;
     }
-    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_P), UiAction::Pause);
-    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F12), UiAction::Screenshot);
-    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F1), UiAction::ToggleDebugPanel);
-    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F2), UiAction::ToggleProfileTiming);
-    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_F3), UiAction::ToggleAntialiasing);
-    EXPECT_EQ(game::ui_action_for_key(GLFW_KEY_ESCAPE), UiAction::Quit);
-    for (const game::KeyBinding& b : game::key_bindings())
-        for (int k : b.keys)
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_P), UiAction::Pause);
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_M), UiAction::ToggleMute);
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_F12), UiAction::Screenshot);
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_F1), UiAction::ToggleDebugPanel);
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_F2), UiAction::ToggleProfileTiming);
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_F3), UiAction::ToggleAntialiasing);
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_F11), UiAction::Fullscreen);
+    EXPECT_EQ(game::ui_action_for_key(bindings, game::kKeyAltEnter), UiAction::Fullscreen);
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_ESCAPE), UiAction::Menu);
+    for (const game::ActionInfo& a : game::actions()) {
+        if (!a.control) continue;
+        for (int k : bindings.keys(a.action)) {
             if (k) {
-                EXPECT_FALSE(game::ui_action_for_key(k).has_value()) << "GLFW key " << k;
+                EXPECT_FALSE(game::ui_action_for_key(bindings, k).has_value()) << "GLFW key " << k;
             }
+        }
+    }
+}
+
+TEST(KeyboardInput, ARebindMovesTheControl) {
+    game::KeyBindings bindings;
+    ASSERT_TRUE(bindings.bind(game::Action::Fire, 0, GLFW_KEY_J).bound);
+    EXPECT_EQ(game::control_for_key(bindings, GLFW_KEY_J), Control::Fire);
+    EXPECT_FALSE(game::control_for_key(bindings, GLFW_KEY_SPACE).has_value());
+    EXPECT_EQ(game::input_from_keys(bindings, [](int k) { return k == GLFW_KEY_J; }).held, bit(Control::Fire));
+    EXPECT_EQ(game::input_from_keys(bindings, [](int k) { return k == GLFW_KEY_SPACE; }).held, 0);
+}
+
+TEST(KeyboardInput, MuteIsABindableAction) {
+    game::KeyBindings bindings;
+    ASSERT_TRUE(bindings.bind(game::Action::Mute, 0, GLFW_KEY_N).bound);
+    EXPECT_EQ(game::ui_action_for_key(bindings, GLFW_KEY_N), UiAction::ToggleMute);
+    EXPECT_FALSE(game::ui_action_for_key(bindings, GLFW_KEY_M).has_value());
+    EXPECT_EQ(game::action_from_id("mute"), game::Action::Mute);
 }
 
 using std::chrono::milliseconds;

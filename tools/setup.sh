@@ -13,6 +13,7 @@ packages=(
   libopenal-dev libebur128-dev sox
   xvfb xauth
   glslang-tools
+  help2man file  # the man page and cpack's scan of the programs (packaging/)
 )
 missing=()
 for p in "${packages[@]}"; do

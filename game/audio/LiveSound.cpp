@@ -32,11 +32,6 @@ bool LiveSound::muted() {
     return sound_.mixer().muted();
 }
 
-audio::Volumes LiveSound::volumes() {
-    std::lock_guard lock(sound_.mixer().mutex());
-    return sound_.mixer().volumes();
-}
-
 void LiveSound::set_volumes(const audio::Volumes& v) {
     std::lock_guard lock(sound_.mixer().mutex());
     sound_.mixer().set_volumes(v);

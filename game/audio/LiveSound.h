@@ -18,7 +18,6 @@ public:
     void set_paused(bool paused) { output_->set_paused(paused); }
     void toggle_mute();
     bool muted();
-    audio::Volumes volumes();
     void set_volumes(const audio::Volumes& v);
 
 private:

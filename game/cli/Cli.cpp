@@ -29,13 +29,14 @@ usage: spindrift <command> [options]
 
 commands:
   play   [--level NAME|PATH] [--record FILE] [--quality Q] [--threads N]
-         Drive the car, take the boat, throw, fire, in a window. With no display,
+         [--settings FILE] [--fullscreen|--windowed]
+         Drive the car, take the boat, throw, fire, in a window (Esc: the menu). With no display,
          renders the bundled demo replay headless instead and says where the frames went.
   record --level NAME|PATH --script FILE --out FILE [--threads N]
          Record a replay headless from an input script (see replays/*.script).
   replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
               [--update-goldens] [--require-goldens] [--strict] [--threads N]
-              [--level NAME|PATH] [--quality Q] [--audio OUT.wav]
+              [--level NAME|PATH] [--quality Q] [--settings FILE] [--audio OUT.wav]
          Play a replay in a window (at --quality), or headless. --check verifies every stored hash and
          compares the checkpoint frames with the goldens beside the replay
          (replays/NAME/tick_NNNNNN.png); failures write the actual frame and a
@@ -67,15 +68,23 @@ options:
   --threads  sim worker threads (1..64); results are identical for any count
   --quality  low, medium, high or auto (default): medium with the render scale ({auto_scales})
              lowered and raised to hold 30 ms frames
+  --settings the settings file to read and keep changes in (default below)
+  --fullscreen, --windowed  for this run, whatever the settings say
   --help, --version
 
-keys (play): W/Up throttle, S/Down brake/reverse, A/D or Left/Right steer, E switch car/boat
-  (near the pier), Backspace reset the vehicle onto the road or open water, 1 throw heavy,
-  2 throw light, Space fire, C camera (chase/driver), V wipers, R/F rain up/down, P pause,
-  F12 screenshot, F1 debug panel (quality, pass times), F2 profile timing, F3
-  anti-aliasing on/off, Esc quit. Every press counts, however slow the frames.
+settings: the menu's changes (quality, window, vsync, FXAA, volumes, camera and wipers
+  at the start, keys) are kept in $XDG_CONFIG_HOME/spindrift/settings.json
+  (~/.config/spindrift/settings.json); command-line options change them for one run only.
+
+keys (play, by default; the menu's Controls page rebinds them): W/Up throttle, S/Down
+  brake/reverse, A/D or Left/Right steer, E switch car/boat (near the pier), Backspace
+  reset the vehicle onto the road or open water, 1 throw heavy, 2 throw light, Space fire,
+  C camera (chase/driver), V wipers, R/F rain up/down, P pause, F12 screenshot, F1 debug
+  panel (quality, pass times), F2 profile timing, F3 anti-aliasing on/off, F11 or
+  Alt+Enter fullscreen, Esc the menu (resume, settings, controls, restart, quit). Every
+  press counts, however slow the frames.
 gamepad (play): right/left trigger throttle/brake, left stick steer, A switch, X throw
-  heavy, Y throw light, B fire, RB camera, LB wipers, D-pad up/down rain, Start pause,
+  heavy, Y throw light, B fire, RB camera, LB wipers, D-pad up/down rain, Start the menu,
   Back reset.
 
 exit codes:
@@ -83,7 +92,8 @@ exit codes:
   3 bad input (replay, level, script, image)   4 platform (no GL context, shader, display)
   5 an output file could not be written
 
-environment: SPINDRIFT_DATA sets the folder holding levels/ and replays/.
+environment: SPINDRIFT_DATA sets the folder holding levels/ and replays/ (default: the
+  installed share/spindrift beside the program, else the source tree it was built from).
 )";
 
 std::string help_text() {

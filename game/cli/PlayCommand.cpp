@@ -1,4 +1,5 @@
 // spindrift play [--level NAME|PATH] [--record FILE] [--quality low|medium|high|auto] [--threads N]
+//                [--settings FILE] [--fullscreen|--windowed]
 #include <filesystem>
 #include <iostream>
 
@@ -7,6 +8,7 @@
 #include "game/cli/Commands.h"
 #include "game/cli/ExitCode.h"
 #include "game/cli/QualityOption.h"
+#include "game/cli/SettingsOption.h"
 #include "game/play/PlayMode.h"
 #include "game/replay/ReplayReader.h"
 #include "game/session/GameSession.h"
@@ -46,16 +48,18 @@ int render_demo_headless(const Args& args) {
 }  // namespace
 
 int play_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--level", "--record", "--threads", "--quality"}, {});
+    Args args(argv, {"--level", "--record", "--threads", "--quality", "--settings"}, {"--fullscreen", "--windowed"});
     if (!args.positional().empty()) throw UsageError("play takes no positional arguments");
+    if (args.flag("--fullscreen") && args.flag("--windowed")) throw UsageError("--fullscreen or --windowed, not both");
     const int threads = args.integer("--threads", 1, 1, 64);
-    const QualityChoice quality = quality_option(args);
+    quality_option(args);  // a bad --quality is a usage error here too
     if (!display_available()) return render_demo_headless(args);
 
     GameSession session = GameSession::open(args.value("--level").value_or("harbour"), threads);
     PlayOptions options;
     if (auto record = args.value("--record")) options.record = fs::path(*record);
-    options.quality = quality;
+    options.player = player_settings(args);
+    options.threads = threads;
     return play_in_window(session, options);
 }
 

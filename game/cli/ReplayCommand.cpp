@@ -17,6 +17,7 @@
 #include "game/cli/ExitCode.h"
 #include "game/cli/Progress.h"
 #include "game/cli/QualityOption.h"
+#include "game/cli/SettingsOption.h"
 #include "game/level/LevelMemory.h"
 #include "game/platform/HeadlessContext.h"
 #include "game/play/PlayMode.h"
@@ -55,7 +56,7 @@ struct FrameOutcome {
 }  // namespace
 
 int replay_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality", "--audio"},
+    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality", "--settings", "--audio"},
               {"--headless", "--check", "--update-goldens", "--require-goldens", "--strict", "--exr"});
     if (args.positional().size() != 1) throw UsageError("replay takes one replay file");
     const fs::path path = args.positional()[0];
@@ -85,7 +86,7 @@ int replay_command(const std::vector<std::string>& argv) {
     const std::optional<std::string> audio_out = args.value("--audio");
     if (audio_out && !args.flag("--headless")) throw UsageError("--audio renders the sound offline: add --headless");
     if (!args.flag("--headless")) {
-        if (display_available()) return play_replay_in_window(replay, session, quality);
+        if (display_available()) return play_replay_in_window(replay, session, player_settings(args));
         std::cerr << "no display: replaying headless\n";
     }
 

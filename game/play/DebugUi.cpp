@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "game/settings/Settings.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
 
@@ -25,17 +26,10 @@ std::string format(const char* fmt, auto... values) {
 
 const char* vehicle_name(sim::Vehicle v) { return v == sim::Vehicle::Car ? "car" : "boat"; }
 
-const char* view_name(sim::ViewMode v) { return v == sim::ViewMode::Chase ? "chase" : "driver"; }
+// The settings file's names, so the HUD and the file agree.
+const char* view_name(sim::ViewMode v) { return camera_setting_name(v); }
 
-const char* wiper_name(sim::WiperMode m) {
-    switch (m) {
-        case sim::WiperMode::Off: return "off";
-        case sim::WiperMode::Intermittent: return "intermittent";
-        case sim::WiperMode::Low: return "low";
-        case sim::WiperMode::High: return "high";
-    }
-    return "?";
-}
+const char* wiper_name(sim::WiperMode m) { return wiper_setting_name(m); }
 
 HudState hud_state(const sim::World& world) {
     const sim::Player& player = world.get<sim::Player>();

@@ -20,7 +20,7 @@ const GamepadBinding kBindings[] = {
     {GLFW_GAMEPAD_BUTTON_LEFT_BUMPER, Control::Wipers, std::nullopt},
     {GLFW_GAMEPAD_BUTTON_DPAD_UP, Control::RainUp, std::nullopt},
     {GLFW_GAMEPAD_BUTTON_DPAD_DOWN, Control::RainDown, std::nullopt},
-    {GLFW_GAMEPAD_BUTTON_START, std::nullopt, UiAction::Pause},
+    {GLFW_GAMEPAD_BUTTON_START, std::nullopt, UiAction::Menu},
     {GLFW_GAMEPAD_BUTTON_BACK, Control::Reset, std::nullopt},
 };
 

@@ -1,10 +1,13 @@
 #include "game/play/PlayLoop.h"
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <ctime>
 #include <iostream>
 
 #include "effects/gl/Gl.h"
+#include "game/audio/SettingsVolumes.h"
 #include "game/capture/ImageFiles.h"
 #include "game/capture/Readback.h"
 #include "game/play/FixedStepClock.h"
@@ -12,6 +15,7 @@
 #include "game/play/ObjectiveHud.h"
 #include "game/play/SoundPanel.h"
 #include "game/play/WayfindingHud.h"
+#include "game/settings/SettingsFile.h"
 #include "sim/vehicle/Boat.h"
 #include "sim/vehicle/Car.h"
 
@@ -24,6 +28,8 @@ namespace {
 constexpr double kIdleWaitSeconds = 0.25;
 // How long the HUD keeps saying "behind real time" after the spiral cap dropped time.
 constexpr auto kBehindShownFor = std::chrono::seconds(1);
+// How long the first start's "Esc: menu and controls" stays up (its last second fading).
+constexpr auto kHintShownFor = std::chrono::seconds(6);
 }  // namespace
 
 fs::path screenshot_path(std::chrono::system_clock::time_point when) {
@@ -52,36 +58,44 @@ PlayLoop::PlayLoop(GameSession& session, Screen& screen, LoopOptions options)
     : session_(session),
       screen_(screen),
       options_(options),
-      renderer_(session.level.scene, *session.world),
-      ui_(screen.glfw_window()) {
+      renderer_(std::in_place, session.level.scene, *session.world),
+      ui_(screen.glfw_window()),
+      settings_(options.settings) {
     // GL_TIME_ELAPSED queries read ~0 on llvmpipe: measure one pass a frame exactly.
-    renderer_.set_timing(effects::gl::TimingMode::Sampled);
+    renderer_->set_timing(effects::gl::TimingMode::Sampled);
     set_quality(options.quality);
+    if (options_.sound) options_.sound->set_volumes(mixer_volumes(settings_.volume));
 }
 
 void PlayLoop::set_quality(QualityChoice quality) {
     quality_ = quality;
-    renderer_.set_quality(preset_of(quality));
+    settings_.quality = quality;
+    renderer_->set_quality(preset_of(quality));
+    renderer_->set_antialiasing(settings_.fxaa);  // the preset's is off; the player's choice stays
     // Auto draws the scene small: temporal upsampling takes its stairs out.
-    renderer_.set_temporal(quality == QualityChoice::Auto);
+    renderer_->set_temporal(quality == QualityChoice::Auto);
     resolution_.reset();
     if (quality == QualityChoice::Auto) {
         ResolutionController::Options o;
-        o.start_scale = renderer_.render_scale();
+        o.min_scale = settings_.auto_min_scale;
+        o.max_scale = settings_.auto_max_scale;
+        o.start_scale = std::clamp(renderer_->render_scale(), o.min_scale, o.max_scale);
         resolution_.emplace(o);
-        renderer_.set_render_scale(resolution_->scale());
+        renderer_->set_render_scale(resolution_->scale());
     }
     if (options_.render_scale) {
         resolution_.reset();
-        renderer_.set_render_scale(*options_.render_scale);
+        renderer_->set_render_scale(*options_.render_scale);
     }
 }
 
 void PlayLoop::run(const LoopHooks& hooks) {
-    sim::World& world = *session_.world;
-    previous_poses_ = poses_now(world);
+    previous_poses_ = poses_now(*session_.world);
     FixedStepClock clock(sim::kTickRateHz);
     const bool keyboard_drives = !hooks.next_input;
+    if (keyboard_drives) queue_start_presses();
+    // Where the window is once shown (a window manager may place it after it is made).
+    std::optional<std::array<int, 4>> placement_at_start;
     bool input_ended = false;
     bool idle_frame_shown = false;
     // The first frame compiles llvmpipe's shader variants: real time, frame times and
@@ -90,11 +104,13 @@ void PlayLoop::run(const LoopHooks& hooks) {
     Clock::time_point last_shown{};  // the previous frame, when it was a playing one; else zero
     auto last = Clock::now();
     while (!screen_.should_close()) {
+        sim::World& world = *session_.world;  // a restart makes a new one
         const Screen::Size size = screen_.size();
         const bool minimised = size.width <= 0 || size.height <= 0;
         // Paused, minimised, unfocused, or a replay at its end: nothing changes on screen.
         const auto is_idle = [&] {
-            return paused_ || minimised || input_ended || (options_.pause_when_unfocused && !screen_.focused());
+            return paused_ || menu_.is_open() || minimised || input_ended ||
+                   (options_.pause_when_unfocused && !screen_.focused());
         };
         const bool was_idle = is_idle();
         // Idle with its frame shown (or nothing to show): sleep until something happens.
@@ -107,7 +123,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
             input_.clear();
             input_.set_down({});
         } else {
-            sim::TickInput down = input_from_keys([this](int key) { return screen_.key_down(key); });
+            sim::TickInput down = input_from_keys(settings_.keys, [this](int key) { return screen_.key_down(key); });
             down.throttle = gamepad.throttle;
             down.brake = gamepad.brake;
             down.steer = gamepad.steer;
@@ -124,6 +140,8 @@ void PlayLoop::run(const LoopHooks& hooks) {
             clock.reset();
             input_.clear();
         } else {
+            for (sim::Control c : start_presses_) input_.press(c);
+            start_presses_.clear();
             for (int n = clock.advance(elapsed); n > 0; --n) {
                 std::optional<sim::TickInput> input = keyboard_drives ? input_.next_tick() : hooks.next_input();
                 if (!input) {
@@ -143,33 +161,101 @@ void PlayLoop::run(const LoopHooks& hooks) {
             continue;
         }
 
-        record.render_scale = renderer_.render_scale();
+        record.render_scale = renderer_->render_scale();
         draw_frame(hooks, screen_.size(), clock.alpha());
         screen_.present();
         const auto shown = Clock::now();
         fps_.frame(shown);
-        idle_frame_shown = idle;
-        if (first_frame) last = shown;
+        idle_frame_shown = idle && !menu_.is_open();  // the open menu answers every frame
+        if (first_frame) {
+            last = shown;
+            if (!placement_at_start) placement_at_start = screen_.windowed_placement();
+            // A player's run (one with a settings file) shows the hint; a timedemo does not.
+            if (options_.settings_file && !settings_.menu_seen && hint_until_ == Clock::time_point{})
+                hint_until_ = shown + kHintShownFor;
+        }
         if (last_shown != Clock::time_point{} && !idle && !first_frame) {
             record.frame_ms = std::chrono::duration<double, std::milli>(shown - last_shown).count();
-            if (resolution_) renderer_.set_render_scale(resolution_->frame(record.frame_ms));
+            if (resolution_) renderer_->set_render_scale(resolution_->frame(record.frame_ms));
             if (hooks.after_frame) hooks.after_frame(record);
         }
         first_frame = false;
         last_shown = idle ? Clock::time_point{} : shown;
+        if (restart_wanted_ && hooks.restart) {
+            restart(hooks);
+            first_frame = true;
+            input_ended = false;
+        }
+        restart_wanted_ = false;
+    }
+    // A window moved or resized by the player is where the next start puts it.
+    const std::optional<std::array<int, 4>> placement = screen_.windowed_placement();
+    if (placement && placement_at_start && placement != placement_at_start) {
+        Settings moved = settings_;
+        moved.window.x = (*placement)[0];
+        moved.window.y = (*placement)[1];
+        moved.window.width = (*placement)[2];
+        moved.window.height = (*placement)[3];
+        change_settings(moved);
     }
 }
 
+void PlayLoop::queue_start_presses() {
+    start_presses_.clear();
+    if (settings_.camera == sim::ViewMode::Driver) start_presses_.push_back(sim::Control::Camera);
+    // Each press steps the wipers one mode on from off.
+    for (int i = 0; i < int(settings_.wipers); ++i) start_presses_.push_back(sim::Control::Wipers);
+}
+
+void PlayLoop::restart(const LoopHooks& hooks) {
+    hooks.restart();
+    // The effects keep state built up over the course (particles, wet glass): they
+    // start again with the world.
+    renderer_.reset();
+    renderer_.emplace(session_.level.scene, *session_.world);
+    renderer_->set_timing(effects::gl::TimingMode::Sampled);
+    set_quality(quality_);
+    previous_poses_ = poses_now(*session_.world);
+    input_.clear();
+    paused_ = false;
+    queue_start_presses();
+}
+
+void PlayLoop::change_settings(const Settings& after) {
+    const Settings before = settings_;
+    settings_ = after;
+    if (after.quality != before.quality || after.auto_min_scale != before.auto_min_scale ||
+        after.auto_max_scale != before.auto_max_scale)
+        set_quality(after.quality);
+    renderer_->set_antialiasing(after.fxaa);
+    if (after.vsync != before.vsync) screen_.set_vsync(after.vsync);
+    if (after.window.fullscreen != before.window.fullscreen) screen_.set_fullscreen(after.window.fullscreen);
+    if (options_.sound && !(after.volume == before.volume)) options_.sound->set_volumes(mixer_volumes(after.volume));
+    if (!options_.settings_file) return;
+    SettingsFile& file = *options_.settings_file;
+    settings_error_.clear();
+    if (!file.save(with_changes(file.settings(), before, after), settings_error_))
+        std::cerr << "settings: " << settings_error_ << std::endl;
+}
+
 void PlayLoop::on_key_press(int key, bool keyboard_drives) {
-    std::optional<UiAction> action = ui_action_for_key(key);
+    menu_.tap(key);
+    if (menu_.capturing_key()) {
+        Settings rebound = settings_;
+        menu_.key_pressed(key, rebound);
+        change_settings(rebound);
+        return;
+    }
+    std::optional<UiAction> action = ui_action_for_key(settings_.keys, key);
     if (!action) {
         // Controls pressed while paused are not kept for later.
-        std::optional<sim::Control> control = control_for_key(key);
-        if (control && keyboard_drives && !paused_ && !ui_.wants_keyboard()) input_.press(*control);
+        std::optional<sim::Control> control = control_for_key(settings_.keys, key);
+        if (control && keyboard_drives && !paused_ && !menu_.is_open() && !ui_.wants_keyboard())
+            input_.press(*control);
         return;
     }
     // Typing into an ImGui field: P and Esc belong to the field.
-    if (ui_.wants_keyboard() && (*action == UiAction::Pause || *action == UiAction::Quit)) return;
+    if (ui_.wants_keyboard() && (*action == UiAction::Pause || *action == UiAction::Menu)) return;
     on_ui_action(*action);
 }
 
@@ -183,25 +269,47 @@ bool PlayLoop::read_gamepad(bool keyboard_drives, sim::TickInput& axes) {
     axes = connected && keyboard_drives ? gamepad_axes(now) : sim::TickInput{};
     for (UiAction action : presses.actions) on_ui_action(action);
     for (sim::Control control : presses.controls)
-        if (keyboard_drives && !paused_ && !ui_.wants_keyboard()) input_.press(control);
+        if (keyboard_drives && !paused_ && !menu_.is_open() && !ui_.wants_keyboard()) input_.press(control);
     return !presses.actions.empty() || !presses.controls.empty();
 }
 
 void PlayLoop::on_ui_action(UiAction action) {
     switch (action) {
+        case UiAction::Menu:
+            if (menu_.is_open()) {
+                menu_.close();
+            } else {
+                menu_.open();
+                if (!settings_.menu_seen) {
+                    Settings seen = settings_;
+                    seen.menu_seen = true;
+                    change_settings(seen);
+                }
+            }
+            break;
         case UiAction::Pause: paused_ = !paused_; break;
         case UiAction::Screenshot: screenshot_wanted_ = true; break;
         case UiAction::ToggleDebugPanel: panel_open_ = !panel_open_; break;
         case UiAction::ToggleProfileTiming:
-            renderer_.set_timing(renderer_.timing() == effects::gl::TimingMode::Profile
+            renderer_->set_timing(renderer_->timing() == effects::gl::TimingMode::Profile
                                      ? effects::gl::TimingMode::Sampled
                                      : effects::gl::TimingMode::Profile);
             break;
-        case UiAction::ToggleAntialiasing: renderer_.set_antialiasing(!renderer_.antialiasing()); break;
+        case UiAction::ToggleAntialiasing: {
+            Settings toggled = settings_;
+            toggled.fxaa = !toggled.fxaa;
+            change_settings(toggled);
+            break;
+        }
+        case UiAction::Fullscreen: {
+            Settings toggled = settings_;
+            toggled.window.fullscreen = !screen_.fullscreen();
+            change_settings(toggled);
+            break;
+        }
         case UiAction::ToggleMute:
             if (options_.sound) options_.sound->toggle_mute();
             break;
-        case UiAction::Quit: screen_.request_close(); break;
     }
 }
 
@@ -214,7 +322,7 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     effects::FramePoses poses = effects::interpolate(previous_poses_, now, float(alpha));
     // A scripted cut is a jump, not a move: no frame sweeps between the two views.
     if (world.tick() > 0 && options_.cameras.cuts_between(world.tick() - 1, world.tick())) poses.camera = now.camera;
-    renderer_.render(world, effects::RenderOutput{screen_.framebuffer(), size.width, size.height}, poses);
+    renderer_->render(world, effects::RenderOutput{screen_.framebuffer(), size.width, size.height}, poses);
 
     // The UI goes on top of the finished frame at the output's size.
     glBindFramebuffer(GL_FRAMEBUFFER, screen_.framebuffer());
@@ -227,9 +335,9 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     hud.recording = hooks.recording();
     hud.status = hooks.status();
     hud.quality = quality_choice_name(quality_);
-    hud.render_scale = renderer_.render_scale();
-    hud.render_width = renderer_.targets().width();
-    hud.render_height = renderer_.targets().height();
+    hud.render_scale = renderer_->render_scale();
+    hud.render_width = renderer_->targets().width();
+    hud.render_height = renderer_->targets().height();
     ui_.begin_frame(size.width, size.height);
     ui_.draw_hud(hud);
     draw_objective_hud(world);
@@ -241,9 +349,23 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
                                    float(size.height)));
     if (panel_open_) {
         QualityChoice quality = quality_;
-        if (ui_.draw_debug_panel(renderer_, quality, &panel_open_)) set_quality(quality);
-        if (options_.sound) draw_sound_panel(*options_.sound);
+        Settings chosen = settings_;
+        if (ui_.draw_debug_panel(*renderer_, quality, &panel_open_)) chosen.quality = quality;
+        // The panel's volumes are the settings' (the menu's too): one value, saved once changed.
+        if (options_.sound) draw_sound_panel(*options_.sound, chosen.volume);
+        if (!(chosen == settings_)) change_settings(chosen);
     }
+    Settings edited = settings_;
+    const PauseMenu::Choice choice = menu_.draw(
+        edited, {.can_restart = bool(hooks.restart),
+                 .key_down = [this](int key) { return screen_.key_down(key); },
+                 .settings_path = options_.settings_file ? options_.settings_file->path().string() : std::string(),
+                 .settings_error = settings_error_});
+    if (!(edited == settings_)) change_settings(edited);
+    if (choice == PauseMenu::Choice::Quit) screen_.request_close();
+    if (choice == PauseMenu::Choice::Restart) restart_wanted_ = true;
+    if (const auto now = Clock::now(); now < hint_until_ && !menu_.is_open())
+        draw_menu_hint(std::chrono::duration<float>(hint_until_ - now).count());
     // The UI's own time (at the output's size), exact one frame in eight: glFinish
     // before and after it, as the renderer's sampled pass times.
     const bool time_ui = ++ui_frames_ % 8 == 0;

@@ -14,14 +14,18 @@
 #include "game/play/DebugUi.h"
 #include "game/play/GamepadInput.h"
 #include "game/play/InputQueue.h"
+#include "game/play/PauseMenu.h"
 #include "game/play/QualityChoice.h"
 #include "game/play/ResolutionController.h"
 #include "game/play/Screen.h"
 #include "game/replay/CameraTrack.h"
 #include "game/session/GameSession.h"
+#include "game/settings/Settings.h"
 #include "game/session/TickDriver.h"
 
 namespace game {
+
+class SettingsFile;
 
 // Where F12 writes a screenshot taken at `when` (local time, to the millisecond):
 // screenshots/spindrift_YYYYMMDD-HHMMSS-mmm.png.
@@ -46,6 +50,9 @@ struct LoopHooks {
     std::function<std::string()> status;
     std::function<bool()> recording;
     std::function<void(const FrameRecord&)> after_frame;  // may be unset
+    // Puts the session's world back to the course's start (the menu's Restart); unset:
+    // the menu has no Restart.
+    std::function<void()> restart;
 };
 
 struct LoopOptions {
@@ -58,6 +65,11 @@ struct LoopOptions {
     bool end_with_input = false;
     // A replay's scripted cameras (none: the player's camera throughout).
     CameraTrack cameras;
+    // The player's settings for this run (the file's, with the command line's changes;
+    // `quality` above wins over theirs) and the file the menu's changes go to (none:
+    // they last this run only).
+    Settings settings;
+    SettingsFile* settings_file = nullptr;
     // The sound, paused with the game, muted by M, its volumes in the F1 panel (none: silent).
     LiveSound* sound = nullptr;
 };
@@ -67,12 +79,12 @@ public:
     // The screen's GL context is current. Throws std::runtime_error if the UI cannot start.
     PlayLoop(GameSession& session, Screen& screen, LoopOptions options);
 
-    // Until the screen closes (Esc, the window's close button), or the input ends with
+    // Until the screen closes (the menu's Quit, the window's close button), or the input ends with
     // `end_with_input`.
     void run(const LoopHooks& hooks);
 
     void set_quality(QualityChoice quality);
-    const effects::Renderer& renderer() const { return renderer_; }
+    const effects::Renderer& renderer() const { return *renderer_; }
     // The UI's (HUD, text, debug panel) time at the output's size, its latest exact
     // measurement (one frame in eight).
     double ui_ms() const { return ui_ms_; }
@@ -101,13 +113,23 @@ private:
     // The world's moving things now, seen from where the scripted cameras put the eye.
     effects::FramePoses poses_now(const sim::World& world) const;
     void take_screenshot(Screen::Size size);
+    // The menu's (or a key's) change of the settings: applied now, and kept in the file.
+    void change_settings(const Settings& after);
+    // The start of a course: the settings' camera and wipers, pressed on its first ticks.
+    void queue_start_presses();
+    void restart(const LoopHooks& hooks);
 
     GameSession& session_;
     Screen& screen_;
     LoopOptions options_;
     effects::gl::DebugOutput debug_output_;  // driver errors to stderr while the context lives
-    effects::Renderer renderer_;
+    std::optional<effects::Renderer> renderer_;  // made again on a restart
     DebugUi ui_;
+    Settings settings_;
+    std::string settings_error_;  // the last save's failure, shown in the menu
+    PauseMenu menu_;
+    std::vector<sim::Control> start_presses_;  // given to the first ticks of a course
+    Clock::time_point hint_until_{};  // the "Esc: menu and controls" hint fades out until then
     InputQueue input_;
     GLFWgamepadstate gamepad_before_{};  // the buttons at the last read: presses are their rising edges
     QualityChoice quality_ = QualityChoice::Auto;
@@ -119,6 +141,7 @@ private:
     uint64_t ui_frames_ = 0;
     double ui_ms_ = 0.0;
     bool screenshot_wanted_ = false;
+    bool restart_wanted_ = false;  // the menu's Restart, done after the frame
     Clock::time_point behind_until_{};  // the HUD says "behind real time" until then
 };
 

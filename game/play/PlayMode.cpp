@@ -25,10 +25,29 @@ std::vector<std::string> demo_replay_args(const fs::path& replay, uint32_t ticks
     return {replay.string(), "--headless", "--frames", frames, "--out", out_dir.string()};
 }
 
+namespace {
+
+Window::Options window_options(const Settings& settings, std::string title) {
+    return Window::Options{.width = settings.window.width,
+                           .height = settings.window.height,
+                           .title = std::move(title),
+                           .vsync = settings.vsync,
+                           .x = settings.window.x,
+                           .y = settings.window.y,
+                           .fullscreen = settings.window.fullscreen};
+}
+
+}  // namespace
+
 int play_in_window(GameSession& session, const PlayOptions& options) {
-    WindowScreen screen(Window::Options{1280, 720, "Spindrift", true});
+    const Settings& settings = options.player.settings;
+    WindowScreen screen(window_options(settings, "Spindrift"));
     std::unique_ptr<LiveSound> sound = LiveSound::open(CameraTrack{});
-    PlayLoop loop(session, screen, LoopOptions{.quality = options.quality, .sound = sound.get()});
+    PlayLoop loop(session, screen,
+                  LoopOptions{.quality = settings.quality,
+                              .settings = settings,
+                              .settings_file = options.player.file.get(),
+                              .sound = sound.get()});
     std::optional<ReplayWriter> writer;
     if (options.record) {
         writer.emplace(ReplayWriter::create(*options.record, replay_header_for(session, 480, 270, {})));
@@ -52,6 +71,16 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
     hooks.ticks = &ticks;
     hooks.status = [] { return std::string(); };
     hooks.recording = [&] { return recording; };
+    hooks.restart = [&] {
+        // The recording is of one course from its start: it ends where the course did.
+        if (recording) {
+            writer->finish();
+            recording = false;
+            std::cout << "recording stopped at the restart" << std::endl;
+        }
+        session.world = std::make_unique<sim::World>(session.level.sim, sim::WorldOptions{options.threads});
+        ticks.restart(*session.world);
+    };
     loop.run(hooks);
     if (recording) writer->finish();
     if (writer)
@@ -60,11 +89,16 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
     return kExitOk;
 }
 
-int play_replay_in_window(const Replay& replay, GameSession& session, QualityChoice quality) {
-    WindowScreen screen(Window::Options{1280, 720, "Spindrift - replay", true});
+int play_replay_in_window(const Replay& replay, GameSession& session, const PlayerSettings& player) {
+    WindowScreen screen(window_options(player.settings, "Spindrift - replay"));
     const CameraTrack cameras(replay.header.camera_shots, replay.header.tick_rate_hz);
     std::unique_ptr<LiveSound> sound = LiveSound::open(cameras);
-    PlayLoop loop(session, screen, LoopOptions{.quality = quality, .cameras = cameras, .sound = sound.get()});
+    PlayLoop loop(session, screen,
+                  LoopOptions{.quality = player.settings.quality,
+                              .cameras = cameras,
+                              .settings = player.settings,
+                              .settings_file = player.file.get(),
+                              .sound = sound.get()});
     ReplayChecker checker(replay);
     std::optional<Divergence> divergence;
     size_t next = 0;
@@ -82,7 +116,7 @@ int play_replay_in_window(const Replay& replay, GameSession& session, QualityCho
     };
     hooks.status = [&] {
         std::string s = "replay " + std::to_string(next) + "/" + std::to_string(replay.inputs.size());
-        if (next >= replay.inputs.size()) s += " ended (Esc quits)";
+        if (next >= replay.inputs.size()) s += " ended (Esc: menu, Quit)";
         if (divergence) s += "  DESYNC at tick " + std::to_string(divergence->tick);
         return s;
     };

@@ -9,23 +9,25 @@
 #include "game/play/QualityChoice.h"
 #include "game/replay/ReplayReader.h"
 #include "game/session/GameSession.h"
+#include "game/settings/SettingsFile.h"
 
 namespace game {
 
 struct PlayOptions {
     std::optional<std::filesystem::path> record;  // record the session to this replay
-    QualityChoice quality = QualityChoice::Auto;
+    PlayerSettings player;  // the window, quality, keys, ... and where changes are kept
+    int threads = 1;        // the sim's, for a restarted world too
 };
 
-// The keyboard drives `session` until the window is closed or Esc; returns an ExitCode.
+// The keyboard drives `session` until the window is closed or the menu's Quit; returns an ExitCode.
 // Throws std::runtime_error when no window can be opened, ReplayError when the recording
 // cannot be written.
 int play_in_window(GameSession& session, const PlayOptions& options);
 
 // Plays the replay's inputs at 60 ticks/s of real time with the HUD shown and checks its stored
-// hashes on the way; P pauses, Esc quits. At the end the last frame stays up until the
+// hashes on the way; P pauses, Esc opens the menu. At the end the last frame stays up until the
 // window is closed. Returns kExitCheckFailed if the world diverged, else kExitOk.
-int play_replay_in_window(const Replay& replay, GameSession& session, QualityChoice quality);
+int play_replay_in_window(const Replay& replay, GameSession& session, const PlayerSettings& player);
 
 // The `replay` command line that renders every 30th tick of a replay `ticks` long
 // headless into `out_dir`: what `play` does without a display.

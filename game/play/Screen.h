@@ -1,6 +1,8 @@
 #pragma once
 // Where the play loop's frames go: a window, or an offscreen target of a fixed size
 // (the timedemo without a display). The GL context is current before one is made.
+#include <array>
+#include <optional>
 #include <vector>
 
 #include "effects/gl/Gl.h"
@@ -37,6 +39,12 @@ public:
     virtual bool focused() const { return true; }
     // Whether anything (input, an expose) happened since the last call.
     virtual bool take_activity() { return false; }
+    // A window's fullscreen and vsync; offscreen there is neither.
+    virtual void set_fullscreen(bool /*on*/) {}
+    virtual bool fullscreen() const { return false; }
+    virtual void set_vsync(bool /*on*/) {}
+    // A window's place and size when not fullscreen (x, y, width, height); none offscreen.
+    virtual std::optional<std::array<int, 4>> windowed_placement() const { return std::nullopt; }
     // The window for Dear ImGui's platform backend; none offscreen.
     virtual GLFWwindow* glfw_window() const { return nullptr; }
 };

@@ -3,7 +3,10 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "game/settings/KeyNames.h"
 
 namespace game {
 
@@ -42,6 +45,7 @@ Window::Window(const Options& options) {
         fail("creating a " + std::to_string(options.width) + "x" + std::to_string(options.height) +
              " window with an OpenGL 4.5 core context");
     }
+    if (options.x && options.y) glfwSetWindowPos(window_, *options.x, *options.y);
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(options.vsync ? 1 : 0);
     glfwSetWindowUserPointer(window_, this);
@@ -54,6 +58,7 @@ Window::Window(const Options& options) {
     glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned int) { mark_activity(w); });
     glfwSetWindowRefreshCallback(window_, mark_activity);
     glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { mark_activity(w); });
+    if (options.fullscreen) set_fullscreen(true);
 }
 
 Window::~Window() {
@@ -84,6 +89,60 @@ bool Window::read_gamepad(GLFWgamepadstate* state) const {
 
 bool Window::minimised() const { return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) != 0; }
 
+namespace {
+
+// The monitor holding most of the window (the primary one if it is on none).
+GLFWmonitor* monitor_under(GLFWwindow* window) {
+    int wx = 0, wy = 0, ww = 0, wh = 0;
+    glfwGetWindowPos(window, &wx, &wy);
+    glfwGetWindowSize(window, &ww, &wh);
+    int count = 0;
+    GLFWmonitor** monitors = glfwGetMonitors(&count);
+    GLFWmonitor* best = glfwGetPrimaryMonitor();
+    long best_area = 0;
+    for (int i = 0; i < count; ++i) {
+        const GLFWvidmode* mode = glfwGetVideoMode(monitors[i]);
+        if (!mode) continue;
+        int mx = 0, my = 0;
+        glfwGetMonitorPos(monitors[i], &mx, &my);
+        const long w = std::max(0, std::min(wx + ww, mx + mode->width) - std::max(wx, mx));
+        const long h = std::max(0, std::min(wy + wh, my + mode->height) - std::max(wy, my));
+        if (w * h > best_area) {
+            best_area = w * h;
+            best = monitors[i];
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+bool Window::fullscreen() const { return glfwGetWindowMonitor(window_) != nullptr; }
+
+void Window::set_fullscreen(bool on) {
+    if (on == fullscreen()) return;
+    if (on) {
+        windowed_ = windowed_placement();
+        GLFWmonitor* monitor = monitor_under(window_);
+        const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+        if (!mode) return;  // no monitor to fill: stay a window
+        glfwSetWindowMonitor(window_, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+    } else {
+        glfwSetWindowMonitor(window_, nullptr, windowed_.x, windowed_.y, windowed_.width, windowed_.height, 0);
+    }
+    activity_ = true;
+}
+
+void Window::set_vsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
+
+Window::Placement Window::windowed_placement() const {
+    if (fullscreen()) return windowed_;
+    Placement p;
+    glfwGetWindowPos(window_, &p.x, &p.y);
+    glfwGetWindowSize(window_, &p.width, &p.height);
+    return p;
+}
+
 bool Window::take_activity() {
     const bool any = activity_;
     activity_ = false;
@@ -96,10 +155,11 @@ std::vector<int> Window::take_key_presses() {
     return out;
 }
 
-void Window::on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+void Window::on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
     auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
     if (!self) return;
     self->activity_ = true;
+    if (key == GLFW_KEY_ENTER && (mods & GLFW_MOD_ALT)) key = kKeyAltEnter;  // a chord, bound as one key
     if (action == GLFW_PRESS && key != GLFW_KEY_UNKNOWN) self->presses_.push_back(key);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // A GLFW window with an OpenGL 4.5 core context, current on the constructing thread.
 // One at a time: it initialises GLFW and terminates it again.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,8 @@ public:
         int width = 1280, height = 720;
         std::string title = "Spindrift";
         bool vsync = true;
+        std::optional<int> x, y;  // where the window goes; none: where the window manager puts it
+        bool fullscreen = false;
     };
 
     // Throws std::runtime_error naming the GLFW step and its message on failure.
@@ -49,6 +52,18 @@ public:
     // no window manager ever focused (Xvfb) still plays.
     bool focused() const { return focused_; }
     bool minimised() const;
+
+    // Borderless fullscreen on the monitor the window is most on (its desktop mode, so
+    // the display does not switch modes), and back to the window it was.
+    void set_fullscreen(bool on);
+    bool fullscreen() const;
+    void set_vsync(bool on);
+    // The window's place and size when not fullscreen (while fullscreen: where it
+    // goes back to), in screen coordinates.
+    struct Placement {
+        int x = 0, y = 0, width = 0, height = 0;
+    };
+    Placement windowed_placement() const;
     // Whether any input or window event arrived since the last call: a paused game
     // draws a frame only then (the debug panel still answers the mouse).
     bool take_activity();
@@ -59,6 +74,7 @@ private:
     static void mark_activity(GLFWwindow* window);
 
     GLFWwindow* window_ = nullptr;
+    Placement windowed_;  // kept while fullscreen
     std::vector<int> presses_;
     bool focused_ = true;
     bool activity_ = false;

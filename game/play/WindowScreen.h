@@ -24,6 +24,13 @@ public:
     bool read_gamepad(GLFWgamepadstate* state) const override { return window_.read_gamepad(state); }
     bool focused() const override { return window_.focused(); }
     bool take_activity() override { return window_.take_activity(); }
+    void set_fullscreen(bool on) override { window_.set_fullscreen(on); }
+    bool fullscreen() const override { return window_.fullscreen(); }
+    void set_vsync(bool on) override { window_.set_vsync(on); }
+    std::optional<std::array<int, 4>> windowed_placement() const override {
+        const Window::Placement p = window_.windowed_placement();
+        return std::array<int, 4>{p.x, p.y, p.width, p.height};
+    }
     GLFWwindow* glfw_window() const override { return window_.handle(); }
 
 private:

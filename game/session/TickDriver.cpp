@@ -4,8 +4,8 @@ namespace game {
 
 sim::TickInput TickDriver::step(sim::TickInput input) {
     const sim::TickInput applied = sim::quantise(input);
-    world_.step(applied);
-    for (const Listener& l : listeners_) l(world_, applied);
+    world_->step(applied);
+    for (const Listener& l : listeners_) l(*world_, applied);
     return applied;
 }
 

@@ -14,14 +14,16 @@ class TickDriver {
 public:
     using Listener = std::function<void(const sim::World&, sim::TickInput applied)>;
 
-    explicit TickDriver(sim::World& world) : world_(world) {}
+    explicit TickDriver(sim::World& world) : world_(&world) {}
+    // The course started again in a new world (the menu's Restart): step that one.
+    void restart(sim::World& world) { world_ = &world; }
     void listen(Listener listener) { listeners_.push_back(std::move(listener)); }
     // Steps one tick and tells every listener; returns the input as applied.
     sim::TickInput step(sim::TickInput input);
-    const sim::World& world() const { return world_; }
+    const sim::World& world() const { return *world_; }
 
 private:
-    sim::World& world_;
+    sim::World* world_;
     std::vector<Listener> listeners_;
 };
 
