@@ -262,6 +262,7 @@ public:
 private:
     void take(void* p, size_t n) {
         if (n > remaining()) throw SnapshotError("snapshot: cut short (a field wants more bytes than are left)");
+        if (n == 0) return;  // an empty list's data() may be null, which memcpy must not see
         std::memcpy(p, in_.data() + at_, n);
         at_ += n;
     }
