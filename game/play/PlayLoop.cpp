@@ -122,6 +122,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
             keyboard_drives = true;
             options_.cameras = CameraTrack{};
             input_.clear();
+            last = Clock::now();  // the take over's own time (its recording's start) is not played
         }
         if (viewer && viewer->settle()) previous_poses_ = poses_now(world);
         sim::TickInput gamepad;
