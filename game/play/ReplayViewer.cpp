@@ -211,8 +211,8 @@ int watch_replay(const Replay& replay, GameSession& session, Screen& screen, Loo
     hooks.recording = [&] { return viewer.recording(); };
     play.run(hooks);
     viewer.finish();
-    std::cout << "watched " << session.world->tick() << " of " << replay.inputs.size() << " ticks, "
-              << viewer.hashes_checked() << " hash checks"
+    std::cout << "watched up to tick " << (viewer.handed_over() ? viewer.taken_at() : session.world->tick()) << " of "
+              << replay.inputs.size() << ", " << viewer.hashes_checked() << " hash checks"
               << (viewer.divergence() ? ", DESYNC at " + viewer.divergence()->message : std::string()) << std::endl;
     if (options.record && !viewer.handed_over() && !viewer.take_over_failed())
         std::cout << "no take over (T): nothing recorded to " << options.record->string() << std::endl;

@@ -49,6 +49,7 @@ public:
     // The HUD's status line: a desync, the take over.
     std::string status() const;
     bool recording() const { return recording_; }
+    uint64_t taken_at() const { return taken_at_; }  // the take over's tick
 
     const ReplayMarkers& markers() const { return markers_; }
     const ViewerTransport& transport() const { return transport_; }
