@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <GLFW/glfw3.h>
@@ -123,8 +124,11 @@ public:
             return {};
         }
         held_ = script_[next_].held;
+        activity_ = !script_[next_].presses.empty();
         return script_[next_++].presses;
     }
+    // A key press wakes an idle loop, as a window's events do.
+    bool take_activity() override { return std::exchange(activity_, false); }
     bool key_down(int key) const override { return std::find(held_.begin(), held_.end(), key) != held_.end(); }
 
 private:
@@ -134,6 +138,7 @@ private:
     size_t next_ = 0;
     std::vector<int> held_;
     bool close_ = false;
+    bool activity_ = false;
 };
 
 class ReplayViewerLoop : public HeadlessTest {

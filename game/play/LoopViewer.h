@@ -29,6 +29,9 @@ public:
     virtual void view(effects::FramePoses& poses) = 0;
     // Inside the UI's frame: the timeline (unless hidden) and the mouse's camera moves.
     virtual void draw(Screen::Size size) = 0;
+    // Whether nothing on screen changes until an event comes (paused, the camera at rest,
+    // no seek pending): the loop then idles as when paused, sleeping between events.
+    virtual bool still() const = 0;
     virtual bool hud_shown() const = 0;
     // Whether the keyboard drives from now on (a take over).
     virtual bool handed_over() const = 0;

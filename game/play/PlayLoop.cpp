@@ -111,7 +111,8 @@ void PlayLoop::run(const LoopHooks& hooks) {
         // Paused, minimised, unfocused, or a replay at its end: nothing changes on screen.
         const auto is_idle = [&] {
             return paused_ || menu_.is_open() || minimised || input_ended ||
-                   (options_.pause_when_unfocused && !screen_.focused());
+                   (options_.pause_when_unfocused && !screen_.focused()) ||
+                   (viewer && !keyboard_drives && viewer->still());
         };
         const bool was_idle = is_idle();
         // Idle with its frame shown (or nothing to show): sleep until something happens.

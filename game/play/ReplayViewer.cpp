@@ -108,6 +108,10 @@ bool ReplayViewer::settle() {
     return jumped;
 }
 
+bool ReplayViewer::still() const {
+    return !handed_over_ && transport_.paused() && !seek_wanted_ && !camera_moving_ && !jumped_;
+}
+
 int ReplayViewer::ticks_due(double dt_s) { return handed_over_ ? 0 : transport_.ticks_due(dt_s); }
 
 // Paused, the world is drawn as it is at its tick.
@@ -143,6 +147,8 @@ void ReplayViewer::draw(Screen::Size) {
             in.look_px = {io.MouseDelta.x, io.MouseDelta.y};
         in.zoom_steps = io.MouseWheel;
     }
+    camera_moving_ = !handed_over_ && (in.move != glm::vec3(0.0f) || io.MouseDown[ImGuiMouseButton_Left] ||
+                                       io.MouseDown[ImGuiMouseButton_Right] || in.zoom_steps != 0.0f);
     if (handed_over_) return;  // the keys and the mouse drive now
     camera_.control(in, dt_s);
     if (!hud_shown_) return;

@@ -39,6 +39,7 @@ public:
     double alpha() const override;
     void view(effects::FramePoses& poses) override;
     void draw(Screen::Size size) override;
+    bool still() const override;
     bool hud_shown() const override { return hud_shown_; }
     bool handed_over() const override { return handed_over_; }
 
@@ -79,6 +80,7 @@ private:
     sim::CameraView last_view_;     // the camera drawn last: where a free or orbit camera starts
     glm::vec3 last_vehicle_{0.0f};  // the vehicle in use as drawn last
     std::optional<uint64_t> seek_wanted_;  // from the timeline, done before the next frame's ticks
+    bool camera_moving_ = false;  // a camera key held or a mouse button down at the last frame
     bool jumped_ = true;
     bool hud_shown_ = true;
     bool handed_over_ = false;
