@@ -108,3 +108,17 @@ TEST(ViewerCamera, EachModeLooksWhereItShould) {
     cam.next_mode(recorded, boat.position);
     EXPECT_EQ(cam.mode(), game::ViewerCameraMode::Driver);
 }
+
+TEST(ViewerCamera, AnOrbitFromAboardStartsBehindTheVehicle) {
+    game::ViewerCamera cam;
+    sim::Pose boat;
+    boat.position = {20.0f, 0.0f, 30.0f};
+    sim::CameraView aboard;  // the driver's view, looking along +x
+    aboard.eye = boat.position + glm::vec3(0.0f, 1.5f, 0.0f);
+    aboard.target = aboard.eye + glm::vec3(1.0f, 0.0f, 0.0f);
+    cam.set_mode(game::ViewerCameraMode::Orbit, aboard, boat.position);
+    const sim::CameraView orbit = cam.view(aboard, boat, false);
+    EXPECT_LT(orbit.eye.x, boat.position.x - 5.0f) << "behind, along the view";
+    EXPECT_GT(orbit.eye.y, boat.position.y + 1.0f);
+    EXPECT_LT(orbit.eye.y - boat.position.y, orbit.target.x - orbit.eye.x) << "not looking straight down";
+}

@@ -37,7 +37,8 @@ commands:
   replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
               [--update-goldens] [--require-goldens] [--strict] [--threads N]
               [--level NAME|PATH] [--quality Q] [--settings FILE] [--audio OUT.wav]
-         Play a replay in a window (at --quality), or headless. --check verifies every stored hash and
+              [--record FILE]
+         Watch a replay in a window (at --quality; keys below), or play it headless. --check verifies every stored hash and
          compares the checkpoint frames with the goldens beside the replay
          (replays/NAME/tick_NNNNNN.png); failures write the actual frame and a
          difference image to --out (default spindrift-out/NAME). --frames picks the
@@ -46,7 +47,8 @@ commands:
          replay that was cut short. --update-goldens rewrites the goldens. A checkpoint
          with no golden yet is reported and skipped; --require-goldens fails the check.
          --audio (with --headless) renders the replay's sound offline to OUT.wav
-         (48 kHz float stereo, the replay's cameras listening).
+         (48 kHz float stereo, the replay's cameras listening). --record (in a window)
+         keeps a take over (T): the old inputs up to its tick, then yours.
   timedemo REPLAY [--size WxH] [--quality Q] [--scale S] [--json FILE] [--headless] [--threads N]
          Play a replay through play's frame loop in real time, every frame drawn with
          the HUD (a window if there is a display, else headless at --size, default
@@ -83,6 +85,11 @@ keys (play, by default; the menu's Controls page rebinds them): W/Up throttle, S
   panel (quality, pass times), F2 profile timing, F3 anti-aliasing on/off, F11 or
   Alt+Enter fullscreen, Esc the menu (resume, settings, controls, restart, quit). Every
   press counts, however slow the frames.
+keys (replay in a window): Space or P pause, Left/Right one tick back/forward,
+  Shift+Left/Right 5 s, [ ] or -/+ speed 0.1x-8x, , . or PageUp/PageDown the previous/next
+  marker, Home/End the start/end, C or 1-5 camera (recorded, chase, driver, free fly: WASD,
+  Q/E and the mouse, orbit: the mouse and the wheel), H hide the HUD and the timeline,
+  T take over (drive on from this tick; see --record); click or drag the timeline to seek.
 gamepad (play): right/left trigger throttle/brake, left stick steer, A switch, X throw
   heavy, Y throw light, B fire, RB camera, LB wipers, D-pad up/down rain, Start the menu,
   Back reset.

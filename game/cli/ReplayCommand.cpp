@@ -1,7 +1,7 @@
 // spindrift replay FILE [--headless] [--check] [--frames LIST] [--out DIR] [--exr]
 //                      [--update-goldens] [--require-goldens] [--strict] [--threads N]
 //                      [--level NAME|PATH] [--audio OUT.wav] (headless)
-//                      [--quality low|medium|high|auto] (in a window)
+//                      [--quality low|medium|high|auto] [--record FILE] (in a window)
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -56,7 +56,7 @@ struct FrameOutcome {
 }  // namespace
 
 int replay_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality", "--settings", "--audio"},
+    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality", "--settings", "--audio", "--record"},
               {"--headless", "--check", "--update-goldens", "--require-goldens", "--strict", "--exr"});
     if (args.positional().size() != 1) throw UsageError("replay takes one replay file");
     const fs::path path = args.positional()[0];
@@ -85,8 +85,13 @@ int replay_command(const std::vector<std::string>& argv) {
 
     const std::optional<std::string> audio_out = args.value("--audio");
     if (audio_out && !args.flag("--headless")) throw UsageError("--audio renders the sound offline: add --headless");
+    if (args.value("--record") && args.flag("--headless"))
+        throw UsageError("--record keeps a take over in the window's viewer: leave out --headless");
     if (!args.flag("--headless")) {
-        if (display_available()) return play_replay_in_window(replay, session, player_settings(args));
+        if (display_available())
+            return play_replay_in_window(replay, session, player_settings(args),
+                                         ViewerOptions{.record = args.value("--record"), .threads = threads});
+        if (args.value("--record")) throw UsageError("--record takes over in a window, and there is no display");
         std::cerr << "no display: replaying headless\n";
     }
 

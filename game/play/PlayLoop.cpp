@@ -92,7 +92,8 @@ void PlayLoop::set_quality(QualityChoice quality) {
 void PlayLoop::run(const LoopHooks& hooks) {
     previous_poses_ = poses_now(*session_.world);
     FixedStepClock clock(sim::kTickRateHz);
-    const bool keyboard_drives = !hooks.next_input;
+    LoopViewer* const viewer = hooks.viewer;
+    bool keyboard_drives = !hooks.next_input;
     if (keyboard_drives) queue_start_presses();
     // Where the window is once shown (a window manager may place it after it is made).
     std::optional<std::array<int, 4>> placement_at_start;
@@ -110,12 +111,21 @@ void PlayLoop::run(const LoopHooks& hooks) {
         // Paused, minimised, unfocused, or a replay at its end: nothing changes on screen.
         const auto is_idle = [&] {
             return paused_ || menu_.is_open() || minimised || input_ended ||
-                   (options_.pause_when_unfocused && !screen_.focused());
+                   (options_.pause_when_unfocused && !screen_.focused()) ||
+                   (viewer && !keyboard_drives && viewer->still());
         };
         const bool was_idle = is_idle();
         // Idle with its frame shown (or nothing to show): sleep until something happens.
         screen_.handle_events(was_idle && (idle_frame_shown || minimised) ? kIdleWaitSeconds : 0.0);
-        for (int key : screen_.take_key_presses()) on_key_press(key, keyboard_drives);
+        for (int key : screen_.take_key_presses()) on_key_press(key, keyboard_drives, viewer);
+        if (viewer && !keyboard_drives && viewer->handed_over()) {
+            // A take over: the keyboard drives on from this tick, seen by the player's camera.
+            keyboard_drives = true;
+            options_.cameras = CameraTrack{};
+            input_.clear();
+            last = Clock::now();  // the take over's own time (its recording's start) is not played
+        }
+        if (viewer && viewer->settle()) previous_poses_ = poses_now(world);
         sim::TickInput gamepad;
         const bool gamepad_pressed = read_gamepad(keyboard_drives, gamepad);
         const bool activity = screen_.take_activity() || gamepad_pressed;
@@ -142,7 +152,10 @@ void PlayLoop::run(const LoopHooks& hooks) {
         } else {
             for (sim::Control c : start_presses_) input_.press(c);
             start_presses_.clear();
-            for (int n = clock.advance(elapsed); n > 0; --n) {
+            const bool viewer_paces = viewer && !keyboard_drives;
+            const int due = viewer_paces ? viewer->ticks_due(std::chrono::duration<double>(elapsed).count())
+                                         : clock.advance(elapsed);
+            for (int n = due; n > 0; --n) {
                 std::optional<sim::TickInput> input = keyboard_drives ? input_.next_tick() : hooks.next_input();
                 if (!input) {
                     input_ended = true;
@@ -162,7 +175,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
         }
 
         record.render_scale = renderer_->render_scale();
-        draw_frame(hooks, screen_.size(), clock.alpha());
+        draw_frame(hooks, screen_.size(), viewer && !keyboard_drives ? viewer->alpha() : clock.alpha());
         screen_.present();
         const auto shown = Clock::now();
         fps_.frame(shown);
@@ -238,7 +251,7 @@ void PlayLoop::change_settings(const Settings& after) {
         std::cerr << "settings: " << settings_error_ << std::endl;
 }
 
-void PlayLoop::on_key_press(int key, bool keyboard_drives) {
+void PlayLoop::on_key_press(int key, bool keyboard_drives, LoopViewer* viewer) {
     menu_.tap(key);
     if (menu_.capturing_key()) {
         Settings rebound = settings_;
@@ -246,6 +259,7 @@ void PlayLoop::on_key_press(int key, bool keyboard_drives) {
         change_settings(rebound);
         return;
     }
+    if (viewer && !menu_.is_open() && !ui_.wants_keyboard() && viewer->key(key)) return;
     std::optional<UiAction> action = ui_action_for_key(settings_.keys, key);
     if (!action) {
         // Controls pressed while paused are not kept for later.
@@ -322,6 +336,8 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     effects::FramePoses poses = effects::interpolate(previous_poses_, now, float(alpha));
     // A scripted cut is a jump, not a move: no frame sweeps between the two views.
     if (world.tick() > 0 && options_.cameras.cuts_between(world.tick() - 1, world.tick())) poses.camera = now.camera;
+    if (hooks.viewer) hooks.viewer->view(poses);
+    const bool hud_shown = !hooks.viewer || hooks.viewer->hud_shown();
     renderer_->render(world, effects::RenderOutput{screen_.framebuffer(), size.width, size.height}, poses);
 
     // The UI goes on top of the finished frame at the output's size.
@@ -339,14 +355,17 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     hud.render_width = renderer_->targets().width();
     hud.render_height = renderer_->targets().height();
     ui_.begin_frame(size.width, size.height);
-    ui_.draw_hud(hud);
-    draw_objective_hud(world);
-    // The prompt follows the sim's positions (its rule, at this tick); the marker the
-    // drawn ones, so it stays on the vehicle as it moves.
-    const sim::Vehicle aboard = world.get<sim::Player>().vehicle();
-    draw_wayfinding(switch_prompt(aboard, world.get<sim::Car>().position(), world.get<sim::Boat>().position()),
-                    vehicle_marker(aboard, poses.car.position, poses.boat.position, poses.camera, float(size.width),
-                                   float(size.height)));
+    if (hud_shown) {
+        ui_.draw_hud(hud);
+        draw_objective_hud(world);
+        // The prompt follows the sim's positions (its rule, at this tick); the marker the
+        // drawn ones, so it stays on the vehicle as it moves.
+        const sim::Vehicle aboard = world.get<sim::Player>().vehicle();
+        draw_wayfinding(switch_prompt(aboard, world.get<sim::Car>().position(), world.get<sim::Boat>().position()),
+                        vehicle_marker(aboard, poses.car.position, poses.boat.position, poses.camera,
+                                       float(size.width), float(size.height)));
+    }
+    if (hooks.viewer) hooks.viewer->draw(size);
     if (panel_open_) {
         QualityChoice quality = quality_;
         Settings chosen = settings_;

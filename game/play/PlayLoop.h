@@ -14,6 +14,7 @@
 #include "game/play/DebugUi.h"
 #include "game/play/GamepadInput.h"
 #include "game/play/InputQueue.h"
+#include "game/play/LoopViewer.h"
 #include "game/play/PauseMenu.h"
 #include "game/play/QualityChoice.h"
 #include "game/play/ResolutionController.h"
@@ -53,6 +54,10 @@ struct LoopHooks {
     // Puts the session's world back to the course's start (the menu's Restart); unset:
     // the menu has no Restart.
     std::function<void()> restart;
+    // A replay viewer (game/play/ReplayViewer.h): it plays `next_input`'s ticks at its own
+    // pace, takes keys first, places the camera, draws its timeline, and may hand over to
+    // the keyboard. None: the clock paces the ticks.
+    LoopViewer* viewer = nullptr;
 };
 
 struct LoopOptions {
@@ -104,7 +109,7 @@ private:
         double fps_ = 0.0;
     };
 
-    void on_key_press(int key, bool keyboard_drives);
+    void on_key_press(int key, bool keyboard_drives, LoopViewer* viewer);
     void on_ui_action(UiAction action);
     // Reads the gamepad: its presses act now, its axes are returned for this frame's
     // ticks (all zero without a gamepad). Returns whether a button went down.

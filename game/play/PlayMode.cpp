@@ -4,8 +4,8 @@
 
 #include "game/cli/ExitCode.h"
 #include "game/play/PlayLoop.h"
+#include "game/play/ReplayViewer.h"
 #include "game/play/WindowScreen.h"
-#include "game/replay/ReplayCheck.h"
 #include "game/replay/ReplayWriter.h"
 #include "game/session/ReplayHeaderFor.h"
 
@@ -89,42 +89,18 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
     return kExitOk;
 }
 
-int play_replay_in_window(const Replay& replay, GameSession& session, const PlayerSettings& player) {
+int play_replay_in_window(const Replay& replay, GameSession& session, const PlayerSettings& player,
+                          const ViewerOptions& viewer) {
     WindowScreen screen(window_options(player.settings, "Spindrift - replay"));
     const CameraTrack cameras(replay.header.camera_shots, replay.header.tick_rate_hz);
     std::unique_ptr<LiveSound> sound = LiveSound::open(cameras);
-    PlayLoop loop(session, screen,
-                  LoopOptions{.quality = player.settings.quality,
-                              .cameras = cameras,
-                              .settings = player.settings,
-                              .settings_file = player.file.get(),
-                              .sound = sound.get()});
-    ReplayChecker checker(replay);
-    std::optional<Divergence> divergence;
-    size_t next = 0;
-    TickDriver ticks(*session.world);
-    ticks.listen([&](const sim::World& world, sim::TickInput) {
-        if (divergence) return;
-        if ((divergence = checker.after_step(world))) std::cout << "DESYNC at " << divergence->message << std::endl;
-    });
-    if (sound) ticks.listen([&](const sim::World& world, sim::TickInput) { sound->after_tick(world); });
-    LoopHooks hooks;
-    hooks.ticks = &ticks;
-    hooks.next_input = [&]() -> std::optional<sim::TickInput> {
-        if (next >= replay.inputs.size()) return std::nullopt;
-        return replay.inputs[next++];
-    };
-    hooks.status = [&] {
-        std::string s = "replay " + std::to_string(next) + "/" + std::to_string(replay.inputs.size());
-        if (next >= replay.inputs.size()) s += " ended (Esc: menu, Quit)";
-        if (divergence) s += "  DESYNC at tick " + std::to_string(divergence->tick);
-        return s;
-    };
-    hooks.recording = [] { return false; };
-    loop.run(hooks);
-    std::cout << "replayed " << next << " of " << replay.inputs.size() << " ticks, " << checker.hashes_checked()
-              << " hash checks" << (divergence ? ", DESYNC at " + divergence->message : std::string()) << std::endl;
-    return divergence ? kExitCheckFailed : kExitOk;
+    return watch_replay(replay, session, screen,
+                        LoopOptions{.quality = player.settings.quality,
+                                    .cameras = cameras,
+                                    .settings = player.settings,
+                                    .settings_file = player.file.get(),
+                                    .sound = sound.get()},
+                        viewer);
 }
 
 }  // namespace game

@@ -24,10 +24,19 @@ struct PlayOptions {
 // cannot be written.
 int play_in_window(GameSession& session, const PlayOptions& options);
 
-// Plays the replay's inputs at 60 ticks/s of real time with the HUD shown and checks its stored
-// hashes on the way; P pauses, Esc opens the menu. At the end the last frame stays up until the
-// window is closed. Returns kExitCheckFailed if the world diverged, else kExitOk.
-int play_replay_in_window(const Replay& replay, GameSession& session, const PlayerSettings& player);
+// The replay viewer's (ReplayViewer's) options.
+struct ViewerOptions {
+    // A take over records the old inputs up to its tick and the new ones after to this file.
+    std::optional<std::filesystem::path> record;
+    int threads = 1;  // the take over's re-simulation's
+};
+
+// The replay viewer (game/play/ReplayViewer.h): plays the replay's inputs in real time with
+// a timeline, pause, single ticks, speeds, markers, seeks, cameras and a take over (keys:
+// docs/REPLAYS.md), checking its stored hashes; Esc opens the menu. Returns kExitCheckFailed
+// if the world diverged, kExitIo if a take over could not be recorded, else kExitOk.
+int play_replay_in_window(const Replay& replay, GameSession& session, const PlayerSettings& player,
+                          const ViewerOptions& viewer);
 
 // The `replay` command line that renders every 30th tick of a replay `ticks` long
 // headless into `out_dir`: what `play` does without a display.

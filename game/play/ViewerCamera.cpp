@@ -11,6 +11,8 @@ constexpr float kLookRadPerPx = 0.005f;
 constexpr float kFlySpeed_mps = 12.0f;
 constexpr float kFastFactor = 4.0f;
 constexpr float kMaxPitch = 1.45f;  // short of straight up or down (the view needs an up)
+// An eye this close to the vehicle (flat) is aboard: an orbit from there would look straight down.
+constexpr float kOrbitFromAboard_m = 3.0f;
 
 glm::vec3 direction(float yaw, float pitch) {
     return {std::cos(pitch) * std::cos(yaw), std::sin(pitch), -std::cos(pitch) * std::sin(yaw)};
@@ -40,6 +42,13 @@ void ViewerCamera::set_mode(ViewerCameraMode mode, const sim::CameraView& from, 
     } else if (mode == ViewerCameraMode::Orbit) {
         const glm::vec3 r = from.eye - vehicle;
         const float flat = std::sqrt(r.x * r.x + r.z * r.z);
+        if (flat < kOrbitFromAboard_m) {
+            // From aboard (the driver's view): behind the vehicle along the view, a little above.
+            azimuth_ = std::atan2(d.z, -d.x);
+            elevation_ = 0.35f;
+            distance_m_ = 10.0f;
+            return;
+        }
         azimuth_ = std::atan2(-r.z, r.x);
         elevation_ = std::clamp(std::atan2(r.y, flat), 0.05f, kMaxPitch);
         distance_m_ = std::clamp(std::sqrt(flat * flat + r.y * r.y), 3.0f, 60.0f);

@@ -11,11 +11,11 @@ ReplaySeeker::ReplaySeeker(const std::vector<sim::TickInput>& inputs, sim::World
     : inputs_(inputs), world_(world), keyframes_(keyframes), near_interval_(near_interval) {
     if (near_interval == 0 || keyframes.interval() % near_interval != 0)
         throw std::invalid_argument("seeker: the near interval must divide the keyframe interval");
-    keyframes_.offer(world_);
-    keep_near();
+    after_step();
 }
 
-void ReplaySeeker::keep_near() {
+void ReplaySeeker::after_step() {
+    keyframes_.offer(world_);
     const uint64_t t = world_.tick();
     if (t % near_interval_ != 0 || t % keyframes_.interval() == 0 || near_.count(t)) return;
     // Only the keyframe interval the world is in: the one a step back needs.
@@ -26,8 +26,7 @@ void ReplaySeeker::keep_near() {
 
 void ReplaySeeker::advance() {
     world_.step(inputs_[size_t(world_.tick())]);
-    keyframes_.offer(world_);
-    keep_near();
+    after_step();
 }
 
 bool ReplaySeeker::step() {

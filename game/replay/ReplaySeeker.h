@@ -28,12 +28,14 @@ public:
     bool step();
     // To `tick` (at most ticks()). Returns how many ticks it simulated.
     uint64_t seek(uint64_t tick);
+    // The world was stepped one tick of the replay elsewhere (the viewer plays through
+    // its TickDriver): keeps the snapshots of the tick it reached.
+    void after_step();
 
     size_t near_bytes() const;  // the raw snapshots of the current five seconds
 
 private:
     void advance();  // one tick, keeping snapshots on their ticks
-    void keep_near();
 
     const std::vector<sim::TickInput>& inputs_;
     sim::World& world_;

@@ -42,20 +42,24 @@ void ViewerTransport::previous_marker() {
     if (auto m = markers_.previous_before(seeker_.tick())) go_to(m->tick);
 }
 
-int ViewerTransport::advance(double dt_s) {
+int ViewerTransport::ticks_due(double dt_s) {
     jumped_ = false;
     if (paused_) return 0;
     owed_ += std::max(0.0, dt_s) * speed() * sim::kTickRateHz;
     int n = std::min(int(std::floor(owed_)), kMaxTicksPerFrame);
     owed_ = std::min(owed_ - n, 1.0 - 1e-9);
-    int stepped = 0;
-    for (; stepped < n; ++stepped)
-        if (!seeker_.step()) break;
-    if (seeker_.tick() >= seeker_.ticks()) {
+    n = int(std::min<uint64_t>(uint64_t(n), seeker_.ticks() - std::min(seeker_.tick(), seeker_.ticks())));
+    if (seeker_.tick() + uint64_t(n) >= seeker_.ticks()) {
         paused_ = true;
         owed_ = 0.0;
     }
-    return stepped;
+    return n;
+}
+
+int ViewerTransport::advance(double dt_s) {
+    const int n = ticks_due(dt_s);
+    for (int i = 0; i < n; ++i) seeker_.step();
+    return n;
 }
 
 }  // namespace game

@@ -34,8 +34,11 @@ public:
     void previous_marker();
     void seek_to(uint64_t tick);
 
-    // One frame of `dt_s` real seconds: plays the ticks due at the speed (none while
-    // paused); stops, paused, at the replay's end. Returns the ticks stepped.
+    // One frame of `dt_s` real seconds: the ticks due at the speed (none while paused,
+    // never past the replay's end, where it pauses), for the caller to step (the viewer
+    // steps them through its TickDriver, which tells the seeker).
+    int ticks_due(double dt_s);
+    // ticks_due, stepped through the seeker. Returns the ticks stepped.
     int advance(double dt_s);
     // How far real time is past the last tick, in ticks [0, 1): for drawing between ticks.
     double alpha() const { return owed_; }
