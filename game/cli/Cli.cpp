@@ -47,6 +47,10 @@ commands:
          with no golden yet is reported and skipped; --require-goldens fails the check.
          --audio (with --headless) renders the replay's sound offline to OUT.wav
          (48 kHz float stereo, the replay's cameras listening).
+  replay FILE --video OUT.mp4 [--from T] [--to T] [--size WxH] [--fps 30|60] [--quality CRF]
+         Render the replay offline into a video: H.264 and AAC sound in MP4 (or .mov,
+         .mkv), default 1280x720 at 60 fps, CRF 18 (0..51, lower is better and larger);
+         --from/--to in ticks (600) or seconds (10s), default the whole replay.
   timedemo REPLAY [--size WxH] [--quality Q] [--scale S] [--json FILE] [--headless] [--threads N]
          Play a replay through play's frame loop in real time, every frame drawn with
          the HUD (a window if there is a display, else headless at --size, default
