@@ -29,9 +29,11 @@ usage: spindrift <command> [options]
 
 commands:
   play   [--level NAME|PATH] [--record FILE] [--quality Q] [--threads N]
-         [--settings FILE] [--fullscreen|--windowed]
+         [--settings FILE] [--fullscreen|--windowed] [--ghost REPLAY]
          Drive the car, take the boat, throw, fire, in a window (Esc: the menu). With no display,
          renders the bundled demo replay headless instead and says where the frames went.
+         --ghost races a replay (of the level played; default the replay's): its vehicle
+         drawn see-through, stepped tick for tick beside yours, the gap at each gate shown.
   record --level NAME|PATH --script FILE --out FILE [--threads N]
          Record a replay headless from an input script (see replays/*.script).
   replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
