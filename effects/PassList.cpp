@@ -12,6 +12,7 @@
 #include "effects/rain/RainStreakPass.h"
 #include "effects/scene/EnvironmentPass.h"
 #include "effects/scene/FxaaPass.h"
+#include "effects/scene/GhostPass.h"
 #include "effects/scene/MirrorPass.h"
 #include "effects/scene/OpaquePass.h"
 #include "effects/scene/SceneCopyPass.h"
@@ -66,6 +67,11 @@ const std::vector<PassEntry>& pass_table() {
           .onto = {{SceneColour, "the tank's liquid inside its screen rectangle"}},
           .refreshes = {{SceneCopy, "around the tank's rectangle: the water behind it, for the rays through the liquid"}}},
          make<FluidPass>},
+        // A replay's vehicle raced beside the player's (play --ghost): over the water, under the glow.
+        {"ghost",
+         {.reads = {Sky, Depth},
+          .onto = {{Depth, "the ghost's nearest surface"}, {SceneColour, "the ghost blended, see-through"}}},
+         make<GhostPass>},
         // Additive; stops at the water's depth too.
         {"energy", {.reads = {Shots, Depth}, .onto = {{SceneColour, "glow and bloom added"}}}, make<EnergyPass>},
         // Under the windshield.

@@ -3,7 +3,6 @@
 // anything renders, and --audio needs --headless.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -11,27 +10,11 @@
 #include <string>
 
 #include "audio/WavFile.h"
+#include "ProgramRun.h"
 
 namespace fs = std::filesystem;
 
 namespace {
-
-struct CommandResult {
-    int code = -1;
-    std::string output;  // stdout and stderr
-};
-
-CommandResult run(const std::string& args) {
-    CommandResult r;
-    FILE* p = popen(("ALSOFT_DRIVERS=null " + std::string(SPINDRIFT_BIN) + " " + args + " 2>&1").c_str(), "r");
-    if (!p) return r;
-    char buf[4096];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
-    const int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return r;
-}
 
 const std::string kReplay = "replay " + std::string(SPINDRIFT_DATA_DIR) + "/replays/harbour_energy.replay";
 
@@ -39,7 +22,7 @@ TEST(AudioCli, WritesTheWholeReplaysSoundUnderItsNameAtTheEnd) {
     const fs::path dir = fs::temp_directory_path() / ("spindrift_audio_cli_" + std::to_string(getpid()));
     fs::create_directories(dir);
     const fs::path out = dir / "energy.wav";
-    const CommandResult r = run(kReplay + " --headless --frames none --audio " + out.string());
+    const ProgramRun r = run_spindrift(kReplay + " --headless --frames none --audio " + out.string());
     EXPECT_EQ(r.code, 0) << r.output;
     EXPECT_TRUE(fs::exists(out));
     EXPECT_FALSE(fs::exists(out.string() + ".partial"));
@@ -51,14 +34,14 @@ TEST(AudioCli, WritesTheWholeReplaysSoundUnderItsNameAtTheEnd) {
 }
 
 TEST(AudioCli, AnUnwritablePathIsRefusedBeforeRendering) {
-    const CommandResult r = run(kReplay + " --headless --frames none --audio /nonexistent-dir/x.wav");
+    const ProgramRun r = run_spindrift(kReplay + " --headless --frames none --audio /nonexistent-dir/x.wav");
     EXPECT_EQ(r.code, 5) << r.output;
     EXPECT_NE(r.output.find("/nonexistent-dir/x.wav.partial"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("ticks"), std::string::npos) << "nothing was replayed: " << r.output;
 }
 
 TEST(AudioCli, AudioNeedsHeadless) {
-    const CommandResult r = run(kReplay + " --audio /tmp/x.wav");
+    const ProgramRun r = run_spindrift(kReplay + " --audio /tmp/x.wav");
     EXPECT_EQ(r.code, 2) << r.output;
     EXPECT_NE(r.output.find("--headless"), std::string::npos) << r.output;
 }

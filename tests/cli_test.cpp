@@ -118,7 +118,7 @@ TEST_F(Cli, HelpNamesEveryCommandAndExitCode) {
     EXPECT_EQ(run("replay x.replay --frames 1,x").code, 2);
     CommandResult group = run("bench --only nope");
     EXPECT_EQ(group.code, 2);
-    EXPECT_NE(group.output.find("rain, play, audio)"), std::string::npos) << group.output;
+    EXPECT_NE(group.output.find("rain, play, audio, video)"), std::string::npos) << group.output;
 }
 
 TEST_F(Cli, RecordedReplayChecksWithAnyThreadCount) {

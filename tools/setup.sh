@@ -11,6 +11,7 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev
   libgtest-dev libbenchmark-dev libimgui-dev libstb-dev libzstd-dev
   libopenal-dev libebur128-dev sox
+  libavformat-dev libavcodec-dev libswscale-dev  # replay --video (GPL: docs/REPLAYS.md#video-export)
   xvfb xauth
   glslang-tools
   help2man file  # the man page and cpack's scan of the programs (packaging/)

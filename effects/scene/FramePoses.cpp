@@ -68,6 +68,8 @@ FramePoses interpolate(const FramePoses& from, const FramePoses& to, float t) {
     for (size_t i = 0; i < p.objects.size() && i < from.objects.size(); ++i)
         if (from.objects[i].age_ticks + 1 == to.objects[i].age_ticks)
             p.objects[i].position = glm::mix(from.objects[i].position, to.objects[i].position, t);
+    if (from.ghost && to.ghost && from.ghost->vehicle == to.ghost->vehicle)
+        p.ghost->pose = lerp_pose(from.ghost->pose, to.ghost->pose, t);
     return p;
 }
 

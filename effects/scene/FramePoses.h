@@ -5,6 +5,7 @@
 // so motion stays smooth whatever the frame rate. Everything else is drawn as of the
 // latest tick.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -31,6 +32,12 @@ struct FramePoses {
     };
     std::vector<Object> objects;
     std::vector<ObjectiveMarker> markers;  // gates and targets: they change only by the tick
+    // A replay's vehicle raced beside the player's (play --ghost), drawn translucent.
+    struct Ghost {
+        sim::Vehicle vehicle = sim::Vehicle::Car;
+        sim::Pose pose;
+    };
+    std::optional<Ghost> ghost;
 };
 
 FramePoses capture_poses(const sim::World& world);

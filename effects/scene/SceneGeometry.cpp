@@ -78,6 +78,14 @@ void SceneGeometry::draw_props(const gl::Program& p, bool depth_only) const {
     }
 }
 
+void SceneGeometry::draw_vehicle(const gl::Program& p, sim::Vehicle vehicle, const sim::Pose& pose) const {
+    const int model = vehicle == sim::Vehicle::Car ? desc_.car_model : desc_.boat_model;
+    if (model < 0) return;
+    p.use();
+    place(p, pose.matrix(), false);
+    models_[size_t(model)]->draw(p, false);
+}
+
 void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const FramePoses& poses, Use use,
                          const Frustum& view, const Select& select, Car car, const std::optional<glm::vec3>& eye) const {
     const bool depth_only = use != Use::Shading;

@@ -38,6 +38,9 @@ public:
     void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
               const Frustum& view, const Select& select = {}, Car car = Car::Drawn,
               const std::optional<glm::vec3>& eye = std::nullopt) const;
+    // The car's or the boat's model whole at `pose` (its moving parts at rest): the
+    // ghost (GhostPass). Sets u_model and u_normal_matrix.
+    void draw_vehicle(const gl::Program& program, sim::Vehicle vehicle, const sim::Pose& pose) const;
     // The level's props alone: what stays put, for the top-down sky occlusion.
     void draw_props(const gl::Program& program, bool depth_only) const;
     // World-space bounds of the props (min = max = 0 without any).

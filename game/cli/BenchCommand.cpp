@@ -19,6 +19,9 @@
 #include "game/bench/PlayBench.h"
 #include "game/bench/ReplayBench.h"
 #include "game/bench/SubsystemTimer.h"
+#if SPINDRIFT_VIDEO
+#include "game/bench/VideoBench.h"
+#endif
 #include "game/bench/WaterBench.h"
 #include "game/capture/FrameCapture.h"
 #include "game/cli/Args.h"
@@ -182,6 +185,14 @@ int bench_command(const std::vector<std::string>& argv) {
         bench_dust_render(report, 1280, 720, quick, DustBenchView::CloseUp);
     }
     if (runs("play")) bench_play(report, quick);
+    if (runs("video")) {
+#if SPINDRIFT_VIDEO
+        std::cerr << "bench: video export\n";
+        bench_video(report, quick);
+#else
+        std::cerr << "bench: video: not built (-DSPINDRIFT_VIDEO=OFF)\n";
+#endif
+    }
     report.add({"memory", "peak resident after 1280x720 frames", peak_resident_mib(), "MiB", 1024.0});
 
     report.print_table();

@@ -7,8 +7,8 @@
 
 namespace game {
 
-inline constexpr std::array<std::string_view, 10> kBenchGroups{"sim",    "replay", "water", "dust", "fluid",
-                                                               "render", "energy", "rain",  "play", "audio"};
+inline constexpr std::array<std::string_view, 11> kBenchGroups{"sim",    "replay", "water", "dust",  "fluid", "render",
+                                                               "energy", "rain",   "play",  "audio", "video"};
 
 // The groups joined with `separator`: "sim,replay,...".
 inline std::string bench_groups(std::string_view separator) {

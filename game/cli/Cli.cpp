@@ -29,9 +29,11 @@ usage: spindrift <command> [options]
 
 commands:
   play   [--level NAME|PATH] [--record FILE] [--quality Q] [--threads N]
-         [--settings FILE] [--fullscreen|--windowed]
+         [--settings FILE] [--fullscreen|--windowed] [--ghost REPLAY]
          Drive the car, take the boat, throw, fire, in a window (Esc: the menu). With no display,
          renders the bundled demo replay headless instead and says where the frames went.
+         --ghost races a replay (of the level played; default the replay's): its vehicle
+         drawn see-through, stepped tick for tick beside yours, the gap at each gate shown.
   record --level NAME|PATH --script FILE --out FILE [--threads N]
          Record a replay headless from an input script (see replays/*.script).
   replay FILE [--headless] [--check] [--frames all|none|T1,T2,...] [--out DIR] [--exr]
@@ -49,6 +51,10 @@ commands:
          --audio (with --headless) renders the replay's sound offline to OUT.wav
          (48 kHz float stereo, the replay's cameras listening). --record (in a window)
          keeps a take over (T): the old inputs up to its tick, then yours.
+  replay FILE --video OUT.mp4 [--from T] [--to T] [--size WxH] [--fps 30|60] [--quality CRF]
+         Render the replay offline into a video: H.264 and AAC sound in MP4 (or .mov,
+         .mkv), default 1280x720 at 60 fps, CRF 18 (0..51, lower is better and larger);
+         --from/--to in ticks (600) or seconds (10s), default the whole replay.
   timedemo REPLAY [--size WxH] [--quality Q] [--scale S] [--json FILE] [--headless] [--threads N]
          Play a replay through play's frame loop in real time, every frame drawn with
          the HUD (a window if there is a display, else headless at --size, default

@@ -1,5 +1,5 @@
 // spindrift play [--level NAME|PATH] [--record FILE] [--quality low|medium|high|auto] [--threads N]
-//                [--settings FILE] [--fullscreen|--windowed]
+//                [--settings FILE] [--fullscreen|--windowed] [--ghost REPLAY]
 #include <filesystem>
 #include <iostream>
 
@@ -10,6 +10,7 @@
 #include "game/cli/QualityOption.h"
 #include "game/cli/SettingsOption.h"
 #include "game/play/PlayMode.h"
+#include "game/replay/ReplayCheck.h"
 #include "game/replay/ReplayReader.h"
 #include "game/session/GameSession.h"
 
@@ -23,8 +24,8 @@ namespace {
 // `play` still shows something on a server or in CI.
 int render_demo_headless(const Args& args) {
     std::cout << "no display: rendering the bundled demo replay headless instead" << std::endl;
-    if (args.value("--record") || args.value("--level"))
-        std::cerr << "note: --level and --record need a window; they are not used for the demo replay\n";
+    if (args.value("--record") || args.value("--level") || args.value("--ghost"))
+        std::cerr << "note: --level, --record and --ghost need a window; they are not used for the demo replay\n";
     const fs::path demo = data_dir() / "replays" / "harbour_drive.replay";
     if (!fs::exists(demo)) {
         std::cerr << "error: the bundled demo replay " << demo.string()
@@ -48,15 +49,26 @@ int render_demo_headless(const Args& args) {
 }  // namespace
 
 int play_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--level", "--record", "--threads", "--quality", "--settings"}, {"--fullscreen", "--windowed"});
+    Args args(argv, {"--level", "--record", "--threads", "--quality", "--settings", "--ghost"}, {"--fullscreen", "--windowed"});
     if (!args.positional().empty()) throw UsageError("play takes no positional arguments");
     if (args.flag("--fullscreen") && args.flag("--windowed")) throw UsageError("--fullscreen or --windowed, not both");
     const int threads = args.integer("--threads", 1, 1, 64);
     quality_option(args);  // a bad --quality is a usage error here too
     if (!display_available()) return render_demo_headless(args);
 
-    GameSession session = GameSession::open(args.value("--level").value_or("harbour"), threads);
     PlayOptions options;
+    // The ghost's replay first: its level is the one played unless --level names another.
+    if (auto ghost = args.value("--ghost")) {
+        options.ghost = read_replay(*ghost, ReadOptions{});
+        options.ghost_name = fs::path(*ghost).stem().string();
+    }
+    GameSession session =
+        GameSession::open(args.value("--level").value_or(options.ghost ? options.ghost->header.level_id : "harbour"), threads);
+    if (options.ghost)
+        if (auto why = replay_mismatch(*options.ghost, *session.world, session.level.content_hash)) {
+            std::cerr << "error: cannot race the ghost of " << *args.value("--ghost") << ": " << *why << "\n";
+            return kExitBadInput;
+        }
     if (auto record = args.value("--record")) options.record = fs::path(*record);
     options.player = player_settings(args);
     options.threads = threads;

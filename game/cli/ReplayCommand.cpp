@@ -2,6 +2,7 @@
 //                      [--update-goldens] [--require-goldens] [--strict] [--threads N]
 //                      [--level NAME|PATH] [--audio OUT.wav] (headless)
 //                      [--quality low|medium|high|auto] [--record FILE] (in a window)
+//                      [--video OUT.mp4 ...] (game/cli/VideoCommand.h)
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -18,6 +19,7 @@
 #include "game/cli/Progress.h"
 #include "game/cli/QualityOption.h"
 #include "game/cli/SettingsOption.h"
+#include "game/cli/VideoCommand.h"
 #include "game/level/LevelMemory.h"
 #include "game/platform/HeadlessContext.h"
 #include "game/play/PlayMode.h"
@@ -56,9 +58,11 @@ struct FrameOutcome {
 }  // namespace
 
 int replay_command(const std::vector<std::string>& argv) {
-    Args args(argv, {"--frames", "--out", "--threads", "--level", "--quality", "--settings", "--audio", "--record"},
-              {"--headless", "--check", "--update-goldens", "--require-goldens", "--strict", "--exr"});
+    std::set<std::string> with_value{"--frames", "--out", "--threads", "--level", "--quality", "--settings", "--audio", "--record"};
+    with_value.insert(std::begin(kVideoOptions), std::end(kVideoOptions));
+    Args args(argv, with_value, {"--headless", "--check", "--update-goldens", "--require-goldens", "--strict", "--exr"});
     if (args.positional().size() != 1) throw UsageError("replay takes one replay file");
+    if (std::optional<int> exported = video_export_if_asked(args)) return *exported;
     const fs::path path = args.positional()[0];
     const bool check = args.flag("--check");
     const bool update = args.flag("--update-goldens");

@@ -32,14 +32,7 @@ std::vector<std::string> objective_hud_lines(const sim::World& world) {
 void draw_objective_hud(const sim::World& world) {
     const std::vector<std::string> lines = objective_hud_lines(world);
     if (lines.empty()) return;
-    const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + 0.5f * viewport->WorkSize.x, viewport->WorkPos.y + 10.0f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-    ImGui::SetNextWindowBgAlpha(0.45f);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoInputs;
-    if (ImGui::Begin("objectives", nullptr, flags)) {
+    if (begin_top_hud_box("objectives", 10.0f)) {
         // The running lap stands out; the rest is plain.
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.3f, 1.0f));
         ImGui::TextUnformatted(lines[0].c_str());
@@ -47,6 +40,17 @@ void draw_objective_hud(const sim::World& world) {
         for (size_t i = 1; i < lines.size(); ++i) ImGui::TextUnformatted(lines[i].c_str());
     }
     ImGui::End();
+}
+
+bool begin_top_hud_box(const char* name, float y) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + 0.5f * viewport->WorkSize.x, viewport->WorkPos.y + y),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.45f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoInputs;
+    return ImGui::Begin(name, nullptr, flags);
 }
 
 }  // namespace game

@@ -18,4 +18,9 @@ std::vector<std::string> objective_hud_lines(const sim::World& world);
 // The HUD's objective box, at the top of the screen's middle, inside an ImGui frame.
 void draw_objective_hud(const sim::World& world);
 
+// Begins an ImGui window for a HUD box centred at the top of the screen, `y` pixels
+// down: no decoration, no input, sized to its text. End it with ImGui::End() whatever
+// this returns.
+bool begin_top_hud_box(const char* name, float y);
+
 }  // namespace game

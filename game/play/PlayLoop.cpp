@@ -11,6 +11,7 @@
 #include "game/capture/ImageFiles.h"
 #include "game/capture/Readback.h"
 #include "game/play/FixedStepClock.h"
+#include "game/play/GhostHud.h"
 #include "game/play/KeyboardInput.h"
 #include "game/play/ObjectiveHud.h"
 #include "game/play/SoundPanel.h"
@@ -338,6 +339,7 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     if (world.tick() > 0 && options_.cameras.cuts_between(world.tick() - 1, world.tick())) poses.camera = now.camera;
     if (hooks.viewer) hooks.viewer->view(poses);
     const bool hud_shown = !hooks.viewer || hooks.viewer->hud_shown();
+    if (options_.ghost) poses.ghost = options_.ghost->pose_between(float(alpha));
     renderer_->render(world, effects::RenderOutput{screen_.framebuffer(), size.width, size.height}, poses);
 
     // The UI goes on top of the finished frame at the output's size.
@@ -358,6 +360,7 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
     if (hud_shown) {
         ui_.draw_hud(hud);
         draw_objective_hud(world);
+        if (options_.ghost) draw_ghost_hud(*options_.ghost, world.tick());
         // The prompt follows the sim's positions (its rule, at this tick); the marker the
         // drawn ones, so it stays on the vehicle as it moves.
         const sim::Vehicle aboard = world.get<sim::Player>().vehicle();

@@ -26,6 +26,7 @@
 
 namespace game {
 
+class GhostRace;
 class SettingsFile;
 
 // Where F12 writes a screenshot taken at `when` (local time, to the millisecond):
@@ -77,6 +78,9 @@ struct LoopOptions {
     SettingsFile* settings_file = nullptr;
     // The sound, paused with the game, muted by M, its volumes in the F1 panel (none: silent).
     LiveSound* sound = nullptr;
+    // A replay raced beside the player (play --ghost), stepped by the ticks' listener:
+    // drawn and its gaps shown (none: no ghost).
+    const GhostRace* ghost = nullptr;
 };
 
 class PlayLoop {

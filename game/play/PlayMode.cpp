@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "game/cli/ExitCode.h"
+#include "game/play/GhostRace.h"
 #include "game/play/PlayLoop.h"
 #include "game/play/ReplayViewer.h"
 #include "game/play/WindowScreen.h"
@@ -43,11 +44,14 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
     const Settings& settings = options.player.settings;
     WindowScreen screen(window_options(settings, "Spindrift"));
     std::unique_ptr<LiveSound> sound = LiveSound::open(CameraTrack{});
+    std::optional<GhostRace> ghost;
+    if (options.ghost) ghost.emplace(*options.ghost, options.ghost_name, session.level.sim, options.threads);
     PlayLoop loop(session, screen,
                   LoopOptions{.quality = settings.quality,
                               .settings = settings,
                               .settings_file = options.player.file.get(),
-                              .sound = sound.get()});
+                              .sound = sound.get(),
+                              .ghost = ghost ? &*ghost : nullptr});
     std::optional<ReplayWriter> writer;
     if (options.record) {
         writer.emplace(ReplayWriter::create(*options.record, replay_header_for(session, 480, 270, {})));
@@ -67,6 +71,7 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
         }
     });
     if (sound) ticks.listen([&](const sim::World& world, sim::TickInput) { sound->after_tick(world); });
+    if (ghost) ticks.listen([&](const sim::World& world, sim::TickInput) { ghost->after_live_tick(world); });
     LoopHooks hooks;  // no next_input: the keyboard drives
     hooks.ticks = &ticks;
     hooks.status = [] { return std::string(); };
@@ -80,6 +85,7 @@ int play_in_window(GameSession& session, const PlayOptions& options) {
         }
         session.world = std::make_unique<sim::World>(session.level.sim, sim::WorldOptions{options.threads});
         ticks.restart(*session.world);
+        if (ghost) ghost->restart();
     };
     loop.run(hooks);
     if (recording) writer->finish();

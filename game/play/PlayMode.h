@@ -17,6 +17,9 @@ struct PlayOptions {
     std::optional<std::filesystem::path> record;  // record the session to this replay
     PlayerSettings player;  // the window, quality, keys, ... and where changes are kept
     int threads = 1;        // the sim's, for a restarted world too
+    // A replay of the session's level to race (play --ghost), and its name on the HUD.
+    std::optional<Replay> ghost;
+    std::string ghost_name;
 };
 
 // The keyboard drives `session` until the window is closed or the menu's Quit; returns an ExitCode.
