@@ -5,6 +5,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "game/play/FrameTargets.h"
+
 namespace game {
 
 ResolutionController::ResolutionController(const Options& options) : options_(options) {
@@ -39,16 +41,24 @@ float ResolutionController::frame(double frame_ms) {
         }
     }
     if (next == scale_ && recent_.size() >= options_.up_frames) {
+        const float up = snap(scale_ + options_.step);
+        const double grow = double(up / scale_) * double(up / scale_);
         const double well_under = options_.up_fraction * options_.budget_ms;
         const auto fast = std::count_if(recent_.end() - std::ptrdiff_t(options_.up_frames), recent_.end(),
-                                        [&](double ms) { return ms < well_under; });
-        if (double(fast) >= options_.up_share * double(options_.up_frames)) next = snap(scale_ + options_.step);
+                                        [&](double ms) { return ms * grow < well_under; });
+        if (double(fast) >= options_.up_share * double(options_.up_frames)) next = up;
     }
     if (next != scale_) {
         scale_ = next;
         recent_.clear();
     }
     return scale_;
+}
+
+double auto_frame_budget_ms(double fill_ms) {
+    constexpr double kPlayableMs = 30.0;
+    if (!std::isfinite(fill_ms) || fill_ms <= 0.0) return kPlayableMs;
+    return std::min(kAutoMeanFills * fill_ms, kPlayableMs);
 }
 
 }  // namespace game
