@@ -146,8 +146,9 @@ TEST(ResolutionController, TheGamesBudgetIsFifteenFillsOrThirtyMilliseconds) {
 }
 
 TEST(ResolutionController, HoldsHalfScaleWhereHalfScaleMeetsTheFrameTarget) {
-    // A frame in fills of a 1.5 ms fill: 4 fills that do not shrink with the pixels plus
-    // 40 at full size, 14 at scale 0.5 (under the 15-fill budget) and 16.1 at 0.55 (over).
+    // A frame in fills of a 1.5 ms fill: 3.5 fills that do not shrink with the pixels
+    // plus 42 at full size: 12.0 at 0.45, 14.0 at scale 0.5 (under the 15-fill budget) and
+    // 16.2 at 0.55 (over).
     const double fill_ms = 1.5;
     game::ResolutionController::Options o;
     o.budget_ms = game::auto_frame_budget_ms(fill_ms);
@@ -156,23 +157,23 @@ TEST(ResolutionController, HoldsHalfScaleWhereHalfScaleMeetsTheFrameTarget) {
     float scale = c.scale();
     double weighted = 0.0;
     for (int i = 0; i < 3000; ++i) {
-        scale = c.frame(modelled_ms(scale, 4.0 * fill_ms, 40.0 * fill_ms));
+        scale = c.frame(modelled_ms(scale, 3.5 * fill_ms, 42.0 * fill_ms));
         if (i >= 1000) weighted += scale;
     }
     EXPECT_FLOAT_EQ(scale, 0.5f);
     EXPECT_NEAR(weighted / 2000.0, 0.5, 1e-3);
-    // The old rule (frames under 0.7 of the budget at this size) stayed at 0.4 here: 0.45's
-    // 12.1 fills are not under 10.5.
+    // The old rule (frames under 0.7 of the budget at this size) stopped at 0.4 here:
+    // 0.45's 12.0 fills are not under 10.5.
 }
 
 TEST(ResolutionController, FallsToTheFloorOnAHostTooSlowForIt) {
     // The same frames on a host two and a half times slower, whose fill is slow with it:
-    // the budget stops at 30 ms, and 0.35's 8.9 fills of 3.75 ms (33 ms) are over it.
+    // the budget stops at 30 ms, and 0.35's 8.6 fills of 3.75 ms (32 ms) are over it.
     const double fill_ms = 3.75;
     game::ResolutionController::Options o;
     o.budget_ms = game::auto_frame_budget_ms(fill_ms);
     game::ResolutionController c(o);
     float scale = c.scale();
-    for (int i = 0; i < 500; ++i) scale = c.frame(modelled_ms(scale, 4.0 * fill_ms, 40.0 * fill_ms));
+    for (int i = 0; i < 500; ++i) scale = c.frame(modelled_ms(scale, 3.5 * fill_ms, 42.0 * fill_ms));
     EXPECT_FLOAT_EQ(scale, o.min_scale);
 }

@@ -12,7 +12,8 @@ namespace game {
 ResolutionController::ResolutionController(const Options& options) : options_(options) {
     if (!(options.min_scale > 0.0f && options.min_scale <= options.max_scale && options.step > 0.0f &&
           options.budget_ms > 0.0 && options.down_window >= 2 && options.up_frames >= 1 &&
-          options.up_share > 0.0 && options.up_share <= 1.0))
+          options.up_share > 0.0 && options.up_share <= 1.0 && options.fixed_share >= 0.0 &&
+          options.fixed_share < 1.0))
         throw std::invalid_argument("ResolutionController: bad options");
     scale_ = snap(options.start_scale);
 }
@@ -42,7 +43,8 @@ float ResolutionController::frame(double frame_ms) {
     }
     if (next == scale_ && recent_.size() >= options_.up_frames) {
         const float up = snap(scale_ + options_.step);
-        const double grow = double(up / scale_) * double(up / scale_);
+        const double pixels = double(up / scale_) * double(up / scale_);
+        const double grow = options_.fixed_share + (1.0 - options_.fixed_share) * pixels;
         const double well_under = options_.up_fraction * options_.budget_ms;
         const auto fast = std::count_if(recent_.end() - std::ptrdiff_t(options_.up_frames), recent_.end(),
                                         [&](double ms) { return ms * grow < well_under; });
