@@ -85,9 +85,10 @@ const std::vector<PassEntry>& pass_table() {
         {"tonemap", {.reads = {SceneColour}, .writes = {Display}}, make<TonemapPass>},
         // At the scene's size: before the upscale, fewer pixels.
         {"fxaa", {.onto = {{Display, "anti-aliased when anti-aliasing is on"}}}, make<FxaaPass>},
-        // At the scene's size, over the last frames (auto): the edges' coverage before the upscale.
+        // At the scene's size, over the last frames (auto): the edges' coverage before the
+        // upscale. Without FXAA it tone maps the scene colour itself (the tone map draws nothing).
         {"temporal",
-         {.reads = {Depth}, .onto = {{Display, "resolved with the last frames when temporal upsampling is on"}}},
+         {.reads = {SceneColour, Depth}, .onto = {{Display, "resolved with the last frames when temporal upsampling is on"}}},
          make<TemporalPass>},
         // To the output's size (nothing at scale 1, where the display is the output); the HUD goes on after.
         {"upscale", {.reads = {Display}, .writes = {Output}}, make<UpscalePass>},

@@ -20,6 +20,7 @@ Renderer::Renderer(const SceneDesc& scene, const sim::World& world, RendererOpti
           sky_occlusion_view_proj(resources_.geometry.props_min(), resources_.geometry.props_max())) {
     for (size_t i = 0; i < pass_table().size(); ++i)
         if (options.passes.contains(i)) pass_indices_.push_back(i);
+    params_.add("tonemap", "exposure", &resources_.exposure, 0.1f, 4.0f);
     params_.add("shadow", "half extent (m)", &shadow_framing_.half_extent_m, 20.0f, 200.0f);
     params_.add("shadow", "centre ahead (m)", &shadow_framing_.ahead_m, 0.0f, 100.0f);
     params_.add("energy", "light per strength", &beam_lighting_.intensity_per_strength, 0.0f, 400.0f);

@@ -137,3 +137,43 @@ TEST(ResolutionController, BadTimesAreIgnoredAndBadOptionsRefused) {
     o.start_scale = 2.0f;
     EXPECT_FLOAT_EQ(game::ResolutionController(o).scale(), 1.0f);
 }
+
+TEST(ResolutionController, TheGamesBudgetIsFifteenFillsOrThirtyMilliseconds) {
+    EXPECT_DOUBLE_EQ(game::auto_frame_budget_ms(1.5), 22.5);  // a quiet two-core llvmpipe host
+    EXPECT_DOUBLE_EQ(game::auto_frame_budget_ms(2.2), 30.0);  // 33 ms in fills: 30 fps holds
+    EXPECT_DOUBLE_EQ(game::auto_frame_budget_ms(6.0), 30.0);  // a busy host: its fills are slow too
+    for (double bad : {0.0, -1.0, std::nan("")}) EXPECT_DOUBLE_EQ(game::auto_frame_budget_ms(bad), 30.0);
+}
+
+TEST(ResolutionController, HoldsHalfScaleWhereHalfScaleMeetsTheFrameTarget) {
+    // A frame in fills of a 1.5 ms fill: 3.5 fills that do not shrink with the pixels
+    // plus 42 at full size: 12.0 at 0.45, 14.0 at scale 0.5 (under the 15-fill budget) and
+    // 16.2 at 0.55 (over).
+    const double fill_ms = 1.5;
+    game::ResolutionController::Options o;
+    o.budget_ms = game::auto_frame_budget_ms(fill_ms);
+    o.start_scale = 0.35f;  // from the floor, as after a slow start
+    game::ResolutionController c(o);
+    float scale = c.scale();
+    double weighted = 0.0;
+    for (int i = 0; i < 3000; ++i) {
+        scale = c.frame(modelled_ms(scale, 3.5 * fill_ms, 42.0 * fill_ms));
+        if (i >= 1000) weighted += scale;
+    }
+    EXPECT_FLOAT_EQ(scale, 0.5f);
+    EXPECT_NEAR(weighted / 2000.0, 0.5, 1e-3);
+    // The old rule (frames under 0.7 of the budget at this size) stopped at 0.4 here:
+    // 0.45's 12.0 fills are not under 10.5.
+}
+
+TEST(ResolutionController, FallsToTheFloorOnAHostTooSlowForIt) {
+    // The same frames on a host two and a half times slower, whose fill is slow with it:
+    // the budget stops at 30 ms, and 0.35's 8.6 fills of 3.75 ms (32 ms) are over it.
+    const double fill_ms = 3.75;
+    game::ResolutionController::Options o;
+    o.budget_ms = game::auto_frame_budget_ms(fill_ms);
+    game::ResolutionController c(o);
+    float scale = c.scale();
+    for (int i = 0; i < 500; ++i) scale = c.frame(modelled_ms(scale, 3.5 * fill_ms, 42.0 * fill_ms));
+    EXPECT_FLOAT_EQ(scale, o.min_scale);
+}

@@ -16,6 +16,8 @@ struct RenderResources {
     const SceneDesc& desc;
     SceneGeometry geometry;
     QualitySettings quality{};  // the renderer's preset; passes follow it frame by frame
+    // The tone map's (TonemapPass, or TemporalPass where it does the tone map itself).
+    float exposure = 0.9f;
 };
 
 // Where the frame ends up: the window's framebuffer (0) or a capture target.

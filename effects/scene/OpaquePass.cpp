@@ -1,8 +1,30 @@
 #include "effects/scene/OpaquePass.h"
 
+#include <glm/common.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
+
 #include "effects/gl/PipelineState.h"
 
 namespace effects {
+
+namespace {
+
+// Whether the eye is within a vehicle's bounds (its model's box, a little larger, around
+// its pose): the driver's seat, the boat's helm.
+bool eye_in_a_vehicle(const FrameContext& frame) {
+    const SceneDesc& desc = frame.resources.desc;
+    auto inside = [&](int model, const sim::Pose& pose) {
+        if (model < 0) return false;
+        const Model& m = desc.models[size_t(model)];
+        const glm::vec3 eye(glm::inverse(pose.matrix()) * glm::vec4(frame.camera.eye, 1.0f));
+        return glm::all(glm::greaterThanEqual(eye, m.bounds_min - 0.5f)) &&
+               glm::all(glm::lessThanEqual(eye, m.bounds_max + 0.5f));
+    };
+    return inside(desc.car_model, frame.poses.car) || inside(desc.boat_model, frame.poses.boat);
+}
+
+}  // namespace
 
 OpaquePass::OpaquePass() : scene_("opaque") {}
 
@@ -26,16 +48,19 @@ void OpaquePass::render(const FrameContext& frame) {
     // offset), so the nearest part still passes GL_LESS when shaded and ties between
     // parts, or with a prop or the ground, go as they went without it: the same image,
     // each vehicle pixel shaded about once.
+    // Only from inside a vehicle: seen from outside, its parts hardly cover each other,
+    // and the depth draws (a draw a part) would cost more than they spare.
     const gl::PipelineState shading{.depth_test = true, .depth_write = true, .cull_back_faces = true};
-    gl::PipelineState vehicles_depth = shading;
-    vehicles_depth.colour_write = false;
-    vehicles_depth.offset_factor = 1.0f;
-    vehicles_depth.offset_units = 1.0f;
-    gl::apply(vehicles_depth);
-    const gl::Program& depth = scene_.depth(frame.camera);
-    frame.resources.geometry.draw(depth, depth, frame.poses,
-                                  SceneGeometry::Use::MovingShadowCasters, view, {}, SceneGeometry::Car::Drawn,
-                                  frame.camera.eye);
+    if (eye_in_a_vehicle(frame)) {
+        gl::PipelineState vehicles_depth = shading;
+        vehicles_depth.colour_write = false;
+        vehicles_depth.offset_factor = 1.0f;
+        vehicles_depth.offset_units = 1.0f;
+        gl::apply(vehicles_depth);
+        const gl::Program& depth = scene_.depth(frame.camera);
+        frame.resources.geometry.draw(depth, depth, frame.poses, SceneGeometry::Use::MovingShadowCasters, view, {},
+                                      SceneGeometry::Car::Drawn, frame.camera.eye);
+    }
     gl::apply(shading);
     // With beams flying, what they reach is drawn with the line-light sum and the rest
     // without it: the sum is a lit pixel's costliest loop, and a beam lights a few

@@ -49,11 +49,11 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
       sphere_(make_sphere_model(12, 20)),
       box_(make_box_model()),
       next_box_(glowing(make_box_model(), glm::vec3(1.8f, 0.55f, 0.05f))),
-      hit_sphere_(glowing(make_sphere_model(12, 20), glm::vec3(0.2f, 1.4f, 0.3f))) {
+      hit_sphere_(glowing(make_sphere_model(12, 20), glm::vec3(0.2f, 1.4f, 0.3f))),
+      batches_(desc) {
     for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
     for (size_t i = 0; i < desc.props.size(); ++i) {
         const auto [lo, hi] = world_box(desc.models[size_t(desc.props[i].model)], desc.props[i].transform);
-        prop_bounds_.emplace_back(lo, hi);
         props_min_ = i == 0 ? lo : glm::min(props_min_, lo);
         props_max_ = i == 0 ? hi : glm::max(props_max_, hi);
     }
@@ -89,7 +89,6 @@ void SceneGeometry::draw_vehicle(const gl::Program& p, sim::Vehicle vehicle, con
 void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const FramePoses& poses, Use use,
                          const Frustum& view, const Select& select, Car car, const std::optional<glm::vec3>& eye) const {
     const bool depth_only = use != Use::Shading;
-    auto kept = [&](glm::vec3 lo, glm::vec3 hi) { return !view.outside(lo, hi) && (!select || select(lo, hi)); };
     auto material = [&](glm::vec4 tint) {
         if (!depth_only) p.set("u_tint", tint);
     };
@@ -98,12 +97,7 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     if (use != Use::StillShadowCasters) draw_moving(p, poses, depth_only, view, select, car, eye);
     if (use == Use::MovingShadowCasters) return;
     material(glm::vec4(1.0f));
-    for (size_t i = 0; i < desc_.props.size(); ++i) {
-        if (!kept(prop_bounds_[i].first, prop_bounds_[i].second)) continue;
-        const PropInstance& inst = desc_.props[i];
-        place(p, inst.transform, depth_only);
-        models_[size_t(inst.model)]->draw(p, depth_only);
-    }
+    batches_.draw(p, depth_only, view, select, eye);
 
     // A level stretch of ground shades nothing: a ray rising from anything above the
     // ground towards the sun can only meet the ground where it rises. Left out of

@@ -11,6 +11,7 @@
 #include "effects/scene/Frustum.h"
 #include "effects/scene/GpuModel.h"
 #include "effects/scene/SceneDesc.h"
+#include "effects/scene/StaticBatches.h"
 #include "sim/world/World.h"
 
 namespace effects {
@@ -34,7 +35,8 @@ public:
     // objects, props, then the ground) so that the early depth test spares hidden pixels
     // their shading; given the `eye`, the vehicles' parts nearest it first too
     // (GpuModel::draw_parts). Shading the car, sets u_cabin_lining per mesh
-    // (mesh.frag.glsl) and leaves it 0.
+    // (mesh.frag.glsl) and leaves it 0. The props are drawn merged (StaticBatches):
+    // `select` and `view` keep or leave a batch (a material's meshes in a square) whole.
     void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
               const Frustum& view, const Select& select = {}, Car car = Car::Drawn,
               const std::optional<glm::vec3>& eye = std::nullopt) const;
@@ -69,7 +71,7 @@ private:
     // The markers' shapes, plain and giving off light: the next gate amber, a hit buoy green.
     GpuModel box_, next_box_, hit_sphere_;
     glm::vec3 props_min_{0.0f}, props_max_{0.0f};
-    std::vector<std::pair<glm::vec3, glm::vec3>> prop_bounds_;  // world space, per instance
+    StaticBatches batches_;  // the props merged, for draws that keep all the view sees
 };
 
 }  // namespace effects

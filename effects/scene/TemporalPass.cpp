@@ -25,7 +25,9 @@ glm::vec2 temporal_jitter_px(uint64_t frame) {
 }
 
 TemporalPass::TemporalPass()
-    : program_(gl::Program::from_files("temporal", {"common/fullscreen.vert.glsl", "scene/temporal.frag.glsl"})) {}
+    : program_(gl::Program::from_files("temporal", {"common/fullscreen.vert.glsl", "scene/temporal.frag.glsl"})),
+      from_hdr_(gl::Program::from_files("temporal.hdr", {"common/fullscreen.vert.glsl", "scene/temporal.frag.glsl"},
+                                        {"FROM_HDR"})) {}
 
 void TemporalPass::register_params(ParamRegistry& params) {
     params.add("temporal", "this frame's weight", &current_weight_, 0.05f, 1.0f);
@@ -55,17 +57,20 @@ void TemporalPass::render(const FrameContext& frame) {
     t.history_fbo().bind();
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state(gl::kFullScreen);
-    program_.use();
-    program_.set("u_current", 0);
-    program_.set("u_history", 1);
-    program_.set("u_depth", 2);
+    const bool from_hdr = tonemapped_by_temporal(frame.resources.quality);
+    const gl::Program& program = from_hdr ? from_hdr_ : program_;
+    program.use();
+    program.set("u_current", 0);
+    program.set("u_history", 1);
+    program.set("u_depth", 2);
+    if (from_hdr) program.set("u_exposure", frame.resources.exposure);
     // From this frame's window position and depth (drawn jittered) to where that point
     // was in the last frame's unjittered view: as a still part of the world, or as a
     // point on the vehicle; what else moves (thrown objects, water) is left to the clamp.
-    program_.set("u_reproject", last_view_proj_ * camera.inv_view_proj);
-    program_.set("u_reproject_vehicle", last_view_proj_ * last_vehicle * glm::inverse(vehicle) * camera.inv_view_proj);
-    program_.set("u_current_weight", history ? current_weight_ : 1.0f);
-    (frame.resources.quality.antialias ? t.antialiased() : t.display()).bind(0);
+    program.set("u_reproject", last_view_proj_ * camera.inv_view_proj);
+    program.set("u_reproject_vehicle", last_view_proj_ * last_vehicle * glm::inverse(vehicle) * camera.inv_view_proj);
+    program.set("u_current_weight", history ? current_weight_ : 1.0f);
+    (from_hdr ? t.colour() : frame.resources.quality.antialias ? t.antialiased() : t.display()).bind(0);
     t.previous_history().bind(1);
     t.depth().bind(2);
     gl::bind_empty_vertex_array();

@@ -4,6 +4,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
+#include "effects/Quality.h"
 #include "effects/gl/Program.h"
 #include "effects/scene/Pass.h"
 
@@ -22,7 +23,9 @@ namespace effects {
 // coverage instead of all-or-nothing: the scene is anti-aliased before the upscale
 // enlarges it, and a small scene's stairs do not show.
 // The neighbourhood is read as five texels (the pixel and the four beside it): on
-// llvmpipe every fetch costs about as much as the arithmetic of a whole pixel.
+// llvmpipe every fetch costs about as much as the arithmetic of a whole pixel. Without
+// FXAA it reads the HDR colour and does the tone map itself (tonemapped_by_temporal):
+// one pass over the scene's pixels instead of two, and one image fewer written and read.
 class TemporalPass final : public Pass {
 public:
     TemporalPass();
@@ -31,7 +34,8 @@ public:
     void register_params(ParamRegistry& params) override;
 
 private:
-    gl::Program program_;
+    gl::Program program_;    // resolves the tone-mapped display image (after FXAA)
+    gl::Program from_hdr_;   // tone maps the HDR colour as it resolves it
     float current_weight_ = 0.15f;  // of this frame in the blend: about the last 7 frames kept
     bool has_history_ = false;
     uint64_t history_generation_ = 0;  // SceneTargets' generation the history was drawn at
@@ -44,5 +48,9 @@ private:
 // sequence's first eight points, again and again, so that every eight frames sample a
 // pixel evenly.
 glm::vec2 temporal_jitter_px(uint64_t frame);
+
+// Whether TemporalPass tone maps the frame (and TonemapPass draws nothing): temporal
+// upsampling on, FXAA off (FXAA reads the tone-mapped image).
+inline bool tonemapped_by_temporal(const QualitySettings& q) { return q.temporal && !q.antialias; }
 
 }  // namespace effects

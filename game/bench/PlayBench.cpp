@@ -8,6 +8,7 @@
 
 #include "game/DataPaths.h"
 #include "game/bench/BenchSupport.h"
+#include "game/play/FrameTargets.h"
 #include "game/play/OffscreenScreen.h"
 #include "game/play/Timedemo.h"
 #include "game/replay/ReplayReader.h"
@@ -59,13 +60,13 @@ void bench_play(BenchReport& report, bool quick) {
                                              run.desync ? ", DESYNC" : "");
                 const double fill = std::max(run.fill_ms, 1e-6);
                 report.add({"play", label + ": mean frame time in fills", s.frame_ms.mean / fill, "fills",
-                            is_auto ? std::optional(15.0) : is_high ? std::optional(40.0) : std::nullopt, false, note});
+                            is_auto ? std::optional(kAutoMeanFills) : is_high ? std::optional(kHighMeanFills) : std::nullopt, false, note});
                 if (!is_auto) continue;
-                report.add({"play", label + ": p95 frame time in fills", s.frame_ms.p95 / fill, "fills", 22.0});
+                report.add({"play", label + ": p95 frame time in fills", s.frame_ms.p95 / fill, "fills", kAutoP95Fills});
                 double scale_time = 0.0;
                 for (const auto& [scale, secs] : s.seconds_at_scale) scale_time += double(scale) * secs;
                 report.add({"play", label + ": time-weighted render scale", s.wall_s > 0 ? scale_time / s.wall_s : 0.0,
-                            "x", 0.5, true});
+                            "x", kAutoMinMeanScale, true});
                 // Scales are steps of 0.05 held as floats: 0.35f reads 0.34999... as a double.
                 const float lowest = s.seconds_at_scale.empty() ? 0.0f : s.seconds_at_scale.front().first;
                 report.add({"play", label + ": lowest render scale", std::round(double(lowest) * 100.0) / 100.0, "x",
@@ -76,7 +77,7 @@ void bench_play(BenchReport& report, bool quick) {
                 for (const auto& [pass, ms] : run.pass_ms)
                     if (pass == "upscale" || pass == "hud") output_ms += ms;
                 report.add({"play", label + ": upscale + HUD at the output's size in fills", output_ms / fill, "fills",
-                            3.0});
+                            kAutoOutputFills});
             }
     }
 }

@@ -96,6 +96,10 @@ void bench_render(BenchReport& report, int width, int height, int frames) {
     FrameCapture capture(width, height);
     std::map<std::string, double> pass_ms;
     std::vector<std::string> order;
+    // Draw calls and triangles a frame, per pass: the same views every run, so the same
+    // counts whatever the machine's load (the timedemo's depend on which frames it drew).
+    std::map<std::string, effects::gl::DrawCount> drawn;
+    std::vector<std::string> drawn_order;
     double frame_s = 0.0;
     // Warm up once (shader compile, first-use allocations), then time frames spread
     // over a drive so the view changes.
@@ -112,10 +116,20 @@ void bench_render(BenchReport& report, int width, int height, int frames) {
             if (!pass_ms.count(p.name)) order.push_back(p.name);
             pass_ms[p.name] += p.ms;
         }
+        for (const effects::Renderer::PassDraws& d : renderer.pass_draws()) {
+            if (!drawn.count(d.name)) drawn_order.push_back(d.name);
+            drawn[d.name].draws += d.count.draws;
+            drawn[d.name].triangles += d.count.triangles;
+        }
     }
     std::string res = std::to_string(width) + "x" + std::to_string(height);
     for (const std::string& name : order)
         report.add({"render", "pass " + name + " @" + res, pass_ms[name] / frames, "ms"});
+    for (const std::string& name : drawn_order) {
+        report.add({"render", "pass " + name + " draws a frame @" + res, double(drawn[name].draws) / frames, "draws"});
+        report.add({"render", "pass " + name + " triangles a frame @" + res, double(drawn[name].triangles) / frames,
+                    "triangles"});
+    }
     report.add({"render", "whole frame @" + res, frame_s * 1e3 / frames, "ms", std::nullopt, false,
                 "profile mode: glFinish around each pass"});
 }

@@ -8,6 +8,7 @@
 
 #include "effects/gl/Gl.h"
 #include "game/audio/SettingsVolumes.h"
+#include "game/bench/TrivialFill.h"
 #include "game/capture/ImageFiles.h"
 #include "game/capture/Readback.h"
 #include "game/play/FixedStepClock.h"
@@ -81,6 +82,10 @@ void PlayLoop::set_quality(QualityChoice quality) {
         o.min_scale = settings_.auto_min_scale;
         o.max_scale = settings_.auto_max_scale;
         o.start_scale = std::clamp(renderer_->render_scale(), o.min_scale, o.max_scale);
+        // The budget in this host's fills of the output (a few, about 30 ms in all).
+        const Screen::Size size = screen_.size();
+        if (size.width > 0 && size.height > 0)
+            o.budget_ms = auto_frame_budget_ms(median_ms(trivial_fill_samples(size.width, size.height, 3)));
         resolution_.emplace(o);
         renderer_->set_render_scale(resolution_->scale());
     }

@@ -5,12 +5,15 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "game/play/FrameTargets.h"
+
 namespace game {
 
 ResolutionController::ResolutionController(const Options& options) : options_(options) {
     if (!(options.min_scale > 0.0f && options.min_scale <= options.max_scale && options.step > 0.0f &&
           options.budget_ms > 0.0 && options.down_window >= 2 && options.up_frames >= 1 &&
-          options.up_share > 0.0 && options.up_share <= 1.0))
+          options.up_share > 0.0 && options.up_share <= 1.0 && options.fixed_share >= 0.0 &&
+          options.fixed_share < 1.0))
         throw std::invalid_argument("ResolutionController: bad options");
     scale_ = snap(options.start_scale);
 }
@@ -39,16 +42,25 @@ float ResolutionController::frame(double frame_ms) {
         }
     }
     if (next == scale_ && recent_.size() >= options_.up_frames) {
+        const float up = snap(scale_ + options_.step);
+        const double pixels = double(up / scale_) * double(up / scale_);
+        const double grow = options_.fixed_share + (1.0 - options_.fixed_share) * pixels;
         const double well_under = options_.up_fraction * options_.budget_ms;
         const auto fast = std::count_if(recent_.end() - std::ptrdiff_t(options_.up_frames), recent_.end(),
-                                        [&](double ms) { return ms < well_under; });
-        if (double(fast) >= options_.up_share * double(options_.up_frames)) next = snap(scale_ + options_.step);
+                                        [&](double ms) { return ms * grow < well_under; });
+        if (double(fast) >= options_.up_share * double(options_.up_frames)) next = up;
     }
     if (next != scale_) {
         scale_ = next;
         recent_.clear();
     }
     return scale_;
+}
+
+double auto_frame_budget_ms(double fill_ms) {
+    constexpr double kPlayableMs = 30.0;
+    if (!std::isfinite(fill_ms) || fill_ms <= 0.0) return kPlayableMs;
+    return std::min(kAutoMeanFills * fill_ms, kPlayableMs);
 }
 
 }  // namespace game

@@ -4,7 +4,14 @@
 // read where this pixel's point was in it and clamped to the range of this pixel and the
 // four beside it, so that what moved or came into view leaves no ghost. Blended in the
 // display's encoding: what it smooths is edges, where that is what the eye compares.
-uniform sampler2D u_current;  // tone-mapped, this frame (texels)
+// FROM_HDR: u_current is the HDR scene colour and the tone map is done here; it rises
+// channel by channel, so the neighbourhood's range is taken in HDR and its two ends tone
+// mapped (three tone maps a pixel, not five).
+#ifdef FROM_HDR
+#include "common/tonemap.glsl"
+uniform float u_exposure;
+#endif
+uniform sampler2D u_current;  // this frame (texels): tone-mapped, or HDR with FROM_HDR
 uniform sampler2D u_history;  // the last resolved frame, bilinear
 uniform sampler2D u_depth;    // this frame's window depth
 uniform mat4 u_reproject;     // this frame's NDC -> the last frame's clip space, the world still
@@ -15,13 +22,18 @@ layout(location = 0) out vec4 o_colour;
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const ivec2 last = textureSize(u_current, 0) - 1;
-    const vec3 c = texelFetch(u_current, p, 0).rgb;
+    vec3 c = texelFetch(u_current, p, 0).rgb;
     const vec3 l = texelFetch(u_current, max(p - ivec2(1, 0), ivec2(0)), 0).rgb;
     const vec3 r = texelFetch(u_current, min(p + ivec2(1, 0), last), 0).rgb;
     const vec3 d = texelFetch(u_current, max(p - ivec2(0, 1), ivec2(0)), 0).rgb;
     const vec3 u = texelFetch(u_current, min(p + ivec2(0, 1), last), 0).rgb;
-    const vec3 lo = min(c, min(min(l, r), min(d, u)));
-    const vec3 hi = max(c, max(max(l, r), max(d, u)));
+    vec3 lo = min(c, min(min(l, r), min(d, u)));
+    vec3 hi = max(c, max(max(l, r), max(d, u)));
+#ifdef FROM_HDR
+    c = tonemap(c * u_exposure);
+    lo = tonemap(lo * u_exposure);
+    hi = tonemap(hi * u_exposure);
+#endif
 
     const float depth = texelFetch(u_depth, p, 0).r;
     const vec2 ndc = (gl_FragCoord.xy / vec2(last + 1)) * 2.0 - 1.0;

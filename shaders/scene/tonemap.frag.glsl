@@ -1,23 +1,12 @@
 #version 450 core
-// HDR scene to display: exposure, ACES filmic fit (Narkowicz 2015), sRGB encoding.
+// HDR scene to display: exposure, ACES filmic fit, sRGB encoding (common/tonemap.glsl).
+#include "common/tonemap.glsl"
 uniform sampler2D u_hdr;
 uniform float u_exposure;
 layout(location = 0) out vec4 o_colour;
 
-vec3 aces(vec3 x) {
-    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-// The sRGB curve above its linear toe, 1.055 c^(1/2.4) - 0.055, as a sum of c's 2nd,
-// 4th and 8th roots and c itself, fitted minimax over [0.0031308, 1]: within 0.012 of
-// an 8-bit step everywhere. pow is a logarithm and an exponential on llvmpipe, a
-// square root one instruction.
-vec3 srgb_encode(vec3 c) {
-    vec3 r2 = sqrt(c), r4 = sqrt(r2), r8 = sqrt(r4);
-    vec3 curve = 0.64234386 * r2 + 0.71213817 * r4 - 0.33688213 * r8 - 0.01755676 * c;
-    return mix(c * 12.92, curve, step(0.0031308, c));
-}
 void main() {
     // Drawn at the scene's own size (TonemapPass): one texel a pixel, unfiltered.
     vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb * u_exposure;
-    o_colour = vec4(srgb_encode(aces(hdr)), 1.0);
+    o_colour = vec4(tonemap(hdr), 1.0);
 }
