@@ -20,11 +20,12 @@ void gather_water_view(const sim::World& world, WaterView& out) {
     out.sea_level_m = water->sea_level();
     const sim::WaveGrid& g = water->grid();
     out.grid = WaveHeights{g.size(), g.spacing(), g.origin(), g.heights()};
+    const int bow = water->bow_sheet();
     for (size_t k = 0; k < water->sheets().size(); ++k) {
         const sim::SplashSheet& s = water->sheets()[k];
         if (s.active())
             out.sheets.push_back({s.size(), s.spacing(), s.positions(), s.airborne(), s.centre_xz(), s.velocities(),
-                                  int(k), s.params().gravity_mps2});
+                                  int(k), s.params().gravity_mps2, int(k) == bow});
     }
     const auto& drops = water->spray().particles();
     out.spray.reserve(drops.size());

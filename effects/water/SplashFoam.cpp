@@ -40,6 +40,8 @@ void SplashFoam::follow(const SheetView& sheet, const WaterView& view) {
     const float dt = view.tick_s;
     for (size_t idx = 0; idx < sheet.positions.size(); ++idx) {
         if (!sheet.airborne[idx]) continue;
+        // A fixed pick of the bow's vertices (a multiplicative hash of the index).
+        if (sheet.bow && (uint32_t(idx) * 2654435761u >> 16) % kBowStride != 0) continue;
         const glm::vec3 p = sheet.positions[idx], v = sheet.velocities[idx];
         const int64_t k = ticks_to_land(p.y - view.sea_level_m, v.y, sheet.gravity_mps2, dt);
         const int64_t lands = view.tick + k;
@@ -49,9 +51,10 @@ void SplashFoam::follow(const SheetView& sheet, const WaterView& view) {
         if (known != 0 && std::abs(known - lands) <= 3) continue;
         known = lands;
         const glm::vec2 xz = glm::vec2(p.x, p.z) + glm::vec2(v.x, v.z) * (float(k) * dt);
-        const glm::vec2 from = sheet.centre_xz ? xz - *sheet.centre_xz : glm::vec2(0.0f);
+        // The bow's foam does not drift out from the sheet's centre, which moves with the boat.
+        const glm::vec2 from = sheet.centre_xz && !sheet.bow ? xz - *sheet.centre_xz : glm::vec2(0.0f);
         const float d = glm::length(from);
-        landings_.push_back({xz, d > 1e-3f ? from / d : glm::vec2(0.0f), lands});
+        landings_.push_back({xz, d > 1e-3f ? from / d : glm::vec2(0.0f), lands, sheet.bow});
     }
 }
 
@@ -106,7 +109,7 @@ void SplashFoam::rasterise(int64_t now, float tick_s, const FoamLook& look) {
         const float grown = 1.0f - std::exp(-age / look.spread_s);
         const float radius = look.start_radius_m + look.spread_m * grown;
         // Spread thinner as it grows, and fading: the same foam over a wider patch.
-        const float strength = look.per_landing * std::exp(-age / look.fade_s) * (look.start_radius_m / radius) *
+        const float strength = look.per_landing * (l.bow ? look.bow_share * float(kBowStride) : 1.0f) * std::exp(-age / look.fade_s) * (look.start_radius_m / radius) *
                                std::clamp(1.0f - (age - (look.life_s - 1.0f)), 0.0f, 1.0f);
         const glm::vec2 c = (l.xz + l.out * (look.drift_m * grown) - origin) / texel - 0.5f;  // in texel centres
         const float r = radius / texel;

@@ -27,6 +27,9 @@ struct FoamLook {
     float spread_s = 1.8f;
     float drift_m = 0.6f;          // how far it drifts out from the splash, over spread_s: the ring opens
     float per_landing = 0.3f;      // strength of one vertex's patch at its centre
+    // The bow's sheet throws vertices on every tick under way: a share of that, so its
+    // foam along the hull and in the wake thins to lace instead of a white carpet.
+    float bow_share = 0.12f;
 };
 
 // The foam map: size x size texels of texel_m, texel (i, j) centred at origin_xz +
@@ -43,8 +46,11 @@ struct FoamField {
 
 class SplashFoam {
 public:
-    static constexpr int kMaxSide = 512;       // texels of the map along a side
-    static constexpr float kFinestTexelM = 0.08f;  // doubled until the live landings fit
+    static constexpr int kMaxSide = 384;        // texels of the map along a side
+    static constexpr float kFinestTexelM = 0.1f;  // doubled until the live landings fit
+    // Of the bow's sheet, which lands thousands of vertices a second under way, one vertex
+    // in this many is followed, standing for the others (the cost is per landing).
+    static constexpr uint32_t kBowStride = 16;
 
     // Follows the sheets of `view` (those with velocities and an id) at view.tick, and
     // rasterises the foam of the landings up to it into field().
@@ -57,6 +63,7 @@ private:
         glm::vec2 xz{0.0f};
         glm::vec2 out{0.0f};  // unit, away from the splash's centre (0 at it)
         int64_t tick = 0;
+        bool bow = false;
     };
     void forget();
     void follow(const SheetView& sheet, const WaterView& view);

@@ -44,6 +44,7 @@ struct SheetView {
     std::span<const glm::vec3> velocities;
     int id = -1;
     float gravity_mps2 = 9.81f;
+    bool bow = false;  // the sheet riding ahead of the boat's bow (its foam is the wake's)
 };
 
 // One spray droplet, laid out as the sprite renderer's instance data.
