@@ -431,3 +431,54 @@ TEST_F(SplashCheckpoint, TheSecondSplashIsANarrowJet) {
     std::printf("jet: %d x %d pixels (%.2f times as tall as wide)\n", w, h, double(h) / w);
     EXPECT_GE(double(h), 2.5 * w) << "the jet should be a column, not a hood";
 }
+
+// A real crown's rim is beaded: the film's rolled-up edge gathers into drops. Along the
+// crown's top edge at 682 there must be small bright blobs (a pixel the brightest of its
+// 5x5 neighbourhood and at least 0.04 brighter than the mean of the 9x9 square round
+// it), many more than on the same rim drawn without its drops.
+TEST_F(SplashCheckpoint, TheRimIsBeadedWithDrops) {
+    replay_to(682);
+    const int w = stage_->width(), h = stage_->height();
+    const CrownParts parts = crown_parts(sheet_mask(), w, h);
+    ASSERT_GT(parts.rim.size(), 100u);
+    // The band along the rim: within 4 pixels of it.
+    std::vector<uint8_t> band(size_t(w) * size_t(h), 0);
+    for (size_t p : parts.rim)
+        for (int dy = -4; dy <= 4; ++dy)
+            for (int dx = -4; dx <= 4; ++dx) {
+                const int x = int(p % size_t(w)) + dx, y = int(p / size_t(w)) + dy;
+                if (x >= 0 && y >= 0 && x < w && y < h) band[size_t(y) * size_t(w) + size_t(x)] = 1;
+            }
+    auto blobs = [&](const game::ImageRGBA8& img, float contrast) {
+        int count = 0;
+        for (int y = 4; y < h - 4; ++y)
+            for (int x = 4; x < w - 4; ++x) {
+                const size_t p = size_t(y) * size_t(w) + size_t(x);
+                if (!band[p]) continue;
+                const float l = luminance01(img, p);
+                bool peak = true;
+                double sum = 0.0;
+                for (int dy = -4; dy <= 4; ++dy)
+                    for (int dx = -4; dx <= 4; ++dx) {
+                        const float n = luminance01(img, size_t(y + dy) * size_t(w) + size_t(x + dx));
+                        sum += n;
+                        if (std::abs(dx) <= 2 && std::abs(dy) <= 2 && (n > l || (n == l && (dy < 0 || (dy == 0 && dx < 0)))))
+                            peak = peak && (dx == 0 && dy == 0);
+                    }
+                count += peak && l - float(sum / 81.0) >= contrast;
+            }
+        return count;
+    };
+    effects::WaterPass& pass = stage_->pass<effects::WaterPass>();
+    pass.look().rim_drops = false;
+    const auto bare = render(water_);
+    const int without = blobs(bare, 0.04f);
+    pass.look().rim_drops = true;
+    const auto img = render(water_);
+    maybe_write_png("crown_beads", img);
+    const int with = blobs(img, 0.04f);
+    std::printf("crown rim: %d bright small blobs along it with its drops, %d without\n", with, without);
+    // The rim's own whiteness is beaded by a noise too, which makes some blobs.
+    EXPECT_GE(with, 90) << "the crown's rim should be beaded with drops";
+    EXPECT_GE(with - without, 35) << "the blobs along the rim should be its drops";
+}

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/common.hpp>
+
 #include <glm/geometric.hpp>
 
 namespace effects {
@@ -99,6 +101,7 @@ void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch, float s
             const float cover = std::min(float(drawn_[at(i, j)]) / 6.0f, 1.0f);
             vertices.push_back({pos(i, j), normal, glm::vec2(float(i), float(j)), stretch, cover});
         }
+    add_drops(sheet, sea_level_m, base, first_index, sheet_indices_end);
     for (const auto& [ea, eb] : foot) {
         const uint32_t a = base + uint32_t(ea), b = base + uint32_t(eb);
         const uint32_t fa = uint32_t(vertices.size()), fb = fa + 1;
@@ -115,6 +118,59 @@ void SplashSheetMesh::append(const SheetView& sheet, float tear_stretch, float s
         }
         indices.insert(indices.end(), {a, b, fb, a, fb, fa});
     }
+}
+
+void SplashSheetMesh::add_drops(const SheetView& sheet, float sea_level_m, uint32_t base, size_t first_index,
+                                size_t end_index) {
+    // A hash in [0, 1) of two numbers fixed in the film.
+    auto hash01 = [](uint32_t a, uint32_t b) {
+        uint32_t h = a * 0x8da6b343u ^ b * 0xd8163841u;
+        h ^= h >> 15;
+        h *= 0x2c1b3c6du;
+        h ^= h >> 12;
+        return float(h >> 8) / float(1u << 24);
+    };
+    // The free edges: those of exactly one drawn triangle of the film (not the jet's).
+    edges_.clear();
+    for (size_t t = first_index; t + 2 < end_index; t += 3)
+        for (int e = 0; e < 3; ++e) {
+            const uint32_t a = indices[t + size_t(e)] - base, b = indices[t + size_t((e + 1) % 3)] - base;
+            if (jet_[a] || jet_[b]) continue;
+            edges_.push_back(uint64_t(std::min(a, b)) << 32 | std::max(a, b));
+        }
+    std::sort(edges_.begin(), edges_.end());
+    for (size_t e = 0; e < edges_.size(); ++e) {
+        if ((e > 0 && edges_[e - 1] == edges_[e]) || (e + 1 < edges_.size() && edges_[e + 1] == edges_[e])) continue;
+        const uint32_t a = uint32_t(edges_[e] >> 32), b = uint32_t(edges_[e]);
+        const glm::vec3 pa = vertices[base + a].position, pb = vertices[base + b].position;
+        if (std::min(pa.y, pb.y) - sea_level_m < 0.08f) continue;  // where it meets the sea: the collar
+        const int beads = int(glm::distance(pa, pb) / kBeadSpacingM + hash01(a, b));
+        for (int k = 0; k < beads; ++k) {
+            const float h = hash01(a + uint32_t(k) * 7919u, b);
+            const float r = kBeadMinM + (kBeadMaxM - kBeadMinM) * h;
+            const float along = (float(k) + 0.25f + 0.5f * hash01(b, a + uint32_t(k))) / float(beads);
+            drops.push_back({glm::mix(pa, pb, along) + glm::vec3(0.0f, 0.6f * r, 0.0f), r});
+        }
+    }
+
+    // The jet's top: its highest drawn vertex.
+    const int n = sheet.size;
+    float jet_top = -1e30f;
+    glm::vec3 top(0.0f);
+    for (size_t k = 0; k < size_t(n) * size_t(n); ++k)
+        if (jet_[k] && drawn_[k] > 0 && vertices[base + k].position.y > jet_top)
+            jet_top = vertices[base + k].position.y, top = vertices[base + k].position;
+    if (!sheet.centre_xz || jet_top - sea_level_m < kTopDropJetM) return;
+    // The column's radius at its top: the widest drawn jet vertex within 10 cm of it.
+    const glm::vec2 axis = *sheet.centre_xz;
+    float radius = 0.0f;
+    for (size_t k = 0; k < jet_.size(); ++k) {
+        const glm::vec3 p = vertices[base + k].position;
+        if (jet_[k] && drawn_[k] > 0 && p.y > jet_top - 0.1f) radius = std::max(radius, glm::distance(glm::vec2(p.x, p.z), axis));
+    }
+    const float r = std::max(kTopDropShare * radius, kTopDropMinM);
+    // Just clear of the column's rounded top, the neck between them pinching shut.
+    drops.push_back({glm::vec3(top.x, jet_top + 1.6f * r, top.z), r});
 }
 
 }  // namespace effects

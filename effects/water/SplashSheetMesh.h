@@ -25,10 +25,15 @@ struct SheetVertex {
 struct SplashSheetMesh {
     std::vector<SheetVertex> vertices;
     std::vector<uint32_t> indices;
+    // Drops drawn with the spray (SprayRenderer): the beads along each crown's free rim,
+    // where surface tension gathers the rolled-up edge into drops (Plateau-Rayleigh), and
+    // the drop pinching off the top of each jet.
+    std::vector<SprayDrop> drops;
 
     void clear() {
         vertices.clear();
         indices.clear();
+        drops.clear();
     }
     // Appends one sheet (all its vertices if any triangle is drawn, none otherwise).
     // A triangle stretched to more than tear_stretch times its size at rest (an edge
@@ -51,10 +56,22 @@ struct SplashSheetMesh {
     static constexpr float kJetLowM = 0.15f, kJetHighM = 0.35f;
     static constexpr float kJetFootDepthM = 0.15f;  // how far below sea level its side goes
     static constexpr float kJetFootFlare = 1.8f;    // its side's bottom, over the outline's distance from the axis
+    // Beads along the film's free edges (the edges of one drawn triangle), one about every
+    // kBeadSpacingM (a few times the rolled-up rim's width, as Plateau-Rayleigh breakup
+    // spaces them), of radius kBeadMinM..kBeadMaxM, placed and sized by a hash of the
+    // edge's vertices so they ride along with the film.
+    static constexpr float kBeadSpacingM = 0.035f;
+    static constexpr float kBeadMinM = 0.005f, kBeadMaxM = 0.011f;
+    // The jet's top drop: this share of the column's radius at its top, at least kTopDropMinM.
+    static constexpr float kTopDropShare = 0.75f, kTopDropMinM = 0.012f;
+    static constexpr float kTopDropJetM = 0.4f;  // the jet must stand this high to pinch one off
 
 private:
+    void add_drops(const SheetView& sheet, float sea_level_m, uint32_t base, size_t first_index, size_t end_index);
+
     std::vector<glm::vec3> shown_;  // scratch: the sheet's positions as drawn
     std::vector<uint8_t> jet_, drawn_;
+    std::vector<uint64_t> edges_;  // scratch: the sheet's triangle edges
     std::vector<std::pair<size_t, size_t>> foot_;  // scratch: the jet's outline, as vertex pairs
 };
 

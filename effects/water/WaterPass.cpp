@@ -3,6 +3,8 @@
 #include "effects/gl/PipelineState.h"
 #include "effects/scene/ScreenRect.h"
 
+#include <algorithm>
+
 #include <glm/common.hpp>
 
 namespace effects {
@@ -18,6 +20,9 @@ void WaterPass::register_params(ParamRegistry& params) {
     params.add("water", "sheet thickness m", &look_.sheet_thickness_m, 0.002f, 0.1f);
     params.add("water", "sheet tear stretch", &look_.sheet_tear_stretch, 1.5f, 50.0f);
     params.add("water", "triangle size px", &look_.triangle_px, 2.0f, 32.0f);
+    params.add("water", "splash foam", &look_.splash_foam, 0.0f, 2.0f);
+    params.add("water", "rim drops", &look_.rim_drops);
+    params.add("water", "splash foam fade s", &look_.splash_foam_look.fade_s, 0.2f, 4.0f);
     params.add("water", "spray opacity", &look_.spray.opacity, 0.0f, 1.0f);
     params.add("water", "spray min pixels", &look_.spray.min_pixels, 0.5f, 4.0f);
     params.add("water", "spray blur (m)", &look_.spray.blur_m, 0.0f, 0.1f);
@@ -45,6 +50,28 @@ glm::ivec4 WaterPass::water_rect(const Camera& cam, const SceneTargets& t, bool 
                                                       : r;
     }
     return rect;
+}
+
+void WaterPass::update_splash_foam(const WaterView& view, const gl::Program& sea) {
+    foam_.update(view, look_.splash_foam_look);
+    const FoamField& f = foam_.field();
+    const int side = std::max(f.size, 1);
+    if (side != foam_map_side_) {
+        foam_map_ = gl::Texture::create_2d("water.splash_foam", GL_R8, side, side);
+        foam_map_.set_filter(GL_LINEAR, GL_LINEAR);
+        foam_map_.set_wrap(GL_CLAMP_TO_EDGE);  // the map's border texels are always clear
+        foam_map_side_ = side;
+        if (f.size == 0) {
+            const uint8_t none = 0;
+            foam_map_.upload<uint8_t>(GL_RED, GL_UNSIGNED_BYTE, std::span<const uint8_t>(&none, 1));
+        }
+    }
+    if (f.size > 0) foam_map_.upload<uint8_t>(GL_RED, GL_UNSIGNED_BYTE, f.texels);
+    foam_map_.bind(kSplashFoamUnit);
+    sea.set("u_splash_foam", int(kSplashFoamUnit));
+    sea.set("u_splash_foam_origin", f.origin_xz);
+    sea.set("u_splash_foam_size_m", float(f.size) * f.texel_m);
+    sea.set("u_splash_foam_amount", f.size > 0 ? look_.splash_foam : 0.0f);
 }
 
 void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
@@ -97,12 +124,21 @@ void WaterPass::draw(const FrameContext& frame, const WaterView& view) {
         surface_.set_grid(p);
         p.set("u_ripples", look_.ripples);
         p.set("u_pixel_m", 2.0f / (cam.proj[1][1] * float(t.height())));
+        update_splash_foam(view, p);
     }
     surface_.bind_grid_textures();
     shading_.shade(t, sheets, water_rect(cam, t, sheets));
 
     // Spray over the shaded water, into the scene colour (depth-tested, not written).
-    spray_.draw(frame, view.spray, look_.spray);
+    // The beads on the sheets' rims and the drops their jets pinch off go with it.
+    const std::vector<SprayDrop>& beads = sheets_.mesh().drops;
+    if (beads.empty() || !sheets || !look_.rim_drops) {
+        spray_.draw(frame, view.spray, look_.spray);
+    } else {
+        drops_.assign(view.spray.begin(), view.spray.end());
+        drops_.insert(drops_.end(), beads.begin(), beads.end());
+        spray_.draw(frame, drops_, look_.spray);
+    }
 }
 
 }  // namespace effects

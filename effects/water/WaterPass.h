@@ -4,6 +4,7 @@
 // targets after the opaque scene was copied (it refracts the copy). Without a
 // sim::WaterSim in the world it draws a flat sea.
 #include "effects/scene/Pass.h"
+#include "effects/water/SplashFoam.h"
 #include "effects/water/SplashSheetRenderer.h"
 #include "effects/water/SprayRenderer.h"
 #include "effects/water/WaterShading.h"
@@ -22,6 +23,9 @@ struct WaterLook {
     float sheet_thickness_m = 0.02f;   // at rest; it thins as the sheet stretches
     float sheet_tear_stretch = 12.0f;   // sheet triangles stretched beyond this (linear) have torn
     float triangle_px = 20.0f;      // the wave lattice coarsens far away to about this size
+    float splash_foam = 1.0f;       // white water where splashes fall back (0: none)
+    FoamLook splash_foam_look;
+    bool rim_drops = true;          // beads on the sheets' rims, the drop atop each jet
     SprayLook spray;
 };
 
@@ -40,17 +44,27 @@ public:
     // Triangles of splash sheet drawn by the last frame (for tests and the profiler).
     size_t sheet_triangles() const { return sheets_.mesh().indices.size() / 3; }
     const std::vector<TileDraw>& surface_tiles() const { return surface_.last_tiles(); }
+    // The foam left where splashes fell back, as of the last frame.
+    const SplashFoam& splash_foam() const { return foam_; }
 
 private:
+    static constexpr GLuint kSplashFoamUnit = 7;  // free of WaterShading's and the lighting's
+
     // The pixels the water's geometry can cover this frame: the shading passes' scissor
     // (the sea's box ends at the horizon, so the sky above it is never masked).
     glm::ivec4 water_rect(const Camera& cam, const SceneTargets& t, bool sheets) const;
+    // Follows the splashes, uploads the foam map and points the sea's program at it.
+    void update_splash_foam(const WaterView& view, const gl::Program& sea);
 
     WaterSurfaceRenderer surface_;
     SplashSheetRenderer sheets_;
     SprayRenderer spray_;
     WaterShading shading_;
+    SplashFoam foam_;
+    gl::Texture foam_map_;  // foam_'s field, or 1x1 of nothing
+    int foam_map_side_ = -1;
     WaterView view_;  // reused each frame
+    std::vector<SprayDrop> drops_;  // scratch: the spray and the sheets' drops
     WaterLook look_;
 };
 

@@ -42,7 +42,14 @@ void WaterView::validate() const {
             throw std::invalid_argument(which + " has " + std::to_string(s.positions.size()) + " positions and " +
                                         std::to_string(s.airborne.size()) + " airborne flags, needs size*size = " +
                                         std::to_string(n));
+        if (!s.velocities.empty() && s.velocities.size() != n)
+            throw std::invalid_argument(which + " has " + std::to_string(s.velocities.size()) +
+                                        " velocities, needs none or size*size = " + std::to_string(n));
+        if (!(s.gravity_mps2 > 0.0f) || !std::isfinite(s.gravity_mps2))
+            throw std::invalid_argument(which + " has a gravity that is not positive and finite");
     }
+    if (!(tick_s > 0.0f) || !std::isfinite(tick_s))
+        throw std::invalid_argument("water view: tick length must be positive and finite");
 }
 
 }  // namespace effects

@@ -38,6 +38,13 @@ struct SheetView {
     // spacings from it (sim::SplashSheet::rest_xz): with it the renderer tells the jet's
     // vertices, thrown straight up from their rest, from the crown's, thrown outward.
     std::optional<glm::vec2> centre_xz;
+    // For the foam where the sheet falls back (SplashFoam): the vertices' velocities
+    // (empty: not followed), the sim's index of the sheet (stable while it flies; -1:
+    // none) and the gravity its vertices fly under.
+    std::span<const glm::vec3> velocities;
+    int id = -1;
+    float gravity_mps2 = 9.81f;
+    bool bow = false;  // the sheet riding ahead of the boat's bow (its foam is the wake's)
 };
 
 // One spray droplet, laid out as the sprite renderer's instance data.
@@ -52,6 +59,12 @@ struct WaterView {
     std::optional<WaveHeights> grid;  // none: a flat sea everywhere
     std::vector<SheetView> sheets;    // the active ones
     std::vector<SprayDrop> spray;
+    // The sim's tick and its length, and World::restore_generation: the foam left where
+    // splashes fell back is a function of the ticks, forgotten when the world is replaced
+    // (tick -1: no history, no foam).
+    int64_t tick = -1;
+    float tick_s = 1.0f / 60.0f;
+    uint64_t restore_generation = 0;
 
     // Throws std::invalid_argument saying which part is inconsistent (sizes that
     // don't match their arrays, a non-positive spacing, a non-finite placement).

@@ -17,6 +17,12 @@ uniform sampler2D u_slopes;  // dh/dx, dh/dz, Laplacian per grid cell, mipmapped
 uniform vec2 u_grid_origin;
 uniform float u_grid_spacing;
 uniform int u_grid_size;
+// White water where splashes fell back (effects/water/SplashFoam): a world-space map of
+// u_splash_foam_size_m square from u_splash_foam_origin, 1 where solid foam.
+uniform sampler2D u_splash_foam;
+uniform vec2 u_splash_foam_origin;
+uniform float u_splash_foam_size_m;
+uniform float u_splash_foam_amount;
 layout(location = 0) out vec4 o_colour;
 
 // Slope (dh/dx, dh/dz) of the wave grid at xz, how much of a breaking crest it is
@@ -42,6 +48,14 @@ vec2 grid_slope(vec2 xz, float lod, out float crest, out float stirred) {
     return slope;
 }
 
+// How much splash foam lies at xz, 0..1.
+float splash_foam(vec2 xz) {
+    if (u_splash_foam_amount <= 0.0) return 0.0;
+    vec2 uv = (xz - u_splash_foam_origin) / u_splash_foam_size_m;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
+    return clamp(textureLod(u_splash_foam, uv, 0.0).r * u_splash_foam_amount, 0.0, 1.0);
+}
+
 vec3 shade_sea(vec3 pos, vec3 n, vec3 v, float sun, float crest, float stirred) {
     float fresnel = water_fresnel(dot(n, v));
     vec3 reflection = water_reflection(n, v, sun, 0.08);
@@ -50,13 +64,19 @@ vec3 shade_sea(vec3 pos, vec3 n, vec3 v, float sun, float crest, float stirred) 
     vec3 c = mix(refraction, reflection, fresnel) + water_line_light(pos, n, fresnel);
     // Stirred water (a wake) is full of fine bubbles: it sends light back paler and
     // greener than the clear sea beside it, so the wake's wedge shows from any height.
-    c = mix(c, foam_radiance(n, sun) * kWaterScatterAlbedo * 1.6, 0.45 * stirred);
+    // Where a splash fell back the water is full of bubbles too, under and around its foam.
+    float splash = splash_foam(pos.xz);
+    c = mix(c, foam_radiance(n, sun) * kWaterScatterAlbedo * 1.6, 0.45 * max(stirred, min(1.0, 1.5 * splash)));
     // Foam on crests and in shallow water, broken up by noise that drifts slowly so it
     // reads as patches, not paint. Most of the sea has none: skip the noise there.
+    // Splash foam is solid white where fresh and thick; as it thins it breaks into lace
+    // (only the noise's peaks stay white).
     float shallow = u_shore_foam * (1.0 - smoothstep(0.05, 0.35, path));
-    if (crest * u_foam + shallow > 0.0) {
+    if (crest * u_foam + shallow + splash > 0.0) {
         float breakup = foam_noise(pos.xz * 2.3 + u_time_s * 0.15) * 0.6 + foam_noise(pos.xz * 7.1) * 0.4;
-        float foam = u_foam * crest * smoothstep(0.35, 0.8, breakup) + shallow * smoothstep(0.25, 0.6, breakup);
+        float lace = foam_noise(pos.xz * 4.7) * 0.55 + foam_noise(pos.xz * 13.0) * 0.45;
+        float foam = u_foam * crest * smoothstep(0.35, 0.8, breakup) + shallow * smoothstep(0.25, 0.6, breakup) +
+                     smoothstep(1.05 - splash, 1.2 - splash, lace);
         c = mix(c, foam_radiance(n, sun), clamp(foam, 0.0, 1.0));
     }
     return c;

@@ -3,8 +3,11 @@
 #include "common/lighting.glsl"
 // One spray droplet per instance, a camera-facing quad from four strip vertices. Lit
 // once per drop here rather than per pixel. A drop is a small clear lens: it shows the
-// sky it refracts (a little darker and greener than the sky around it), a glint of the
-// sun and a forward-scattering glow looking towards the sun, never a white point.
+// sky it refracts (a little darker and greener than the sky around it), a forward-
+// scattering glow looking towards the sun, and a small highlight: the sun mirrored in
+// its surface, where the drop's normal is halfway between the eye and the sun, brighter
+// at grazing angles (Fresnel) and for drops large enough to resolve (a drop spread over
+// its blur circle spreads its highlight too, so fine spray never reads as white points).
 layout(location = 0) in vec4 a_drop;  // world position, radius in metres
 uniform mat4 u_view_proj;
 uniform vec3 u_eye;
@@ -17,6 +20,9 @@ uniform float u_opacity;
 out vec2 v_corner;
 out vec3 v_colour;
 out float v_alpha;
+out vec2 v_glint_at;  // where on the disc the sun is mirrored
+out vec3 v_glint;     // the highlight's peak
+out float v_sharp;    // 1: the drop is drawn at its own size (in focus, resolved)
 
 void main() {
     vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0;
@@ -29,6 +35,7 @@ void main() {
     float drawn = max(max(r, 0.5 * u_blur_m), 0.5 * u_min_pixels * u_pixel_m * dist);
     float coverage = r * r / (drawn * drawn);
     // Drops within a metre of the eye fade out rather than fill the screen.
+    v_sharp = smoothstep(0.5, 0.9, coverage);
     v_alpha = u_opacity * max(coverage, 0.1) * smoothstep(0.6, 1.6, dist);
 
     vec3 d = normalize(p - u_eye);
@@ -39,7 +46,13 @@ void main() {
     vec3 sky = textureLod(u_env, vec3(0, 1, 0), u_env_max_lod).rgb;
     vec3 sun = u_sun_radiance * sun_visibility(p, vec3(0)) * (0.03 + 0.5 * forward);
     v_colour = apply_fog(0.85 * sky * vec3(0.88, 0.95, 0.97) + sun, p, u_eye);
+    vec3 h = normalize(u_sun_dir - d);
+    v_glint_at = vec2(dot(h, u_cam_right), dot(h, u_cam_up));
+    float fresnel = 0.02 + 0.98 * pow(1.0 - clamp(dot(h, -d), 0.0, 1.0), 5.0);
+    v_glint = u_sun_radiance * sun_visibility(p, vec3(0)) * (0.6 + 3.0 * fresnel) * min(coverage, 1.0) *
+              exp(-dist * 0.0012) * smoothstep(0.6, 1.6, dist);  // through the fog (apply_fog)
 
     v_corner = corner;
-    gl_Position = u_view_proj * vec4(p + (u_cam_right * corner.x + u_cam_up * corner.y) * drawn, 1.0);
+    // Drawn at the drop's front, so a bead resting on a sheet's rim is not hidden in it.
+    gl_Position = u_view_proj * vec4(p - d * r + (u_cam_right * corner.x + u_cam_up * corner.y) * drawn, 1.0);
 }
