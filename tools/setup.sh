@@ -10,7 +10,7 @@ packages=(
   libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev libopenexr-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev
   libgtest-dev libbenchmark-dev libimgui-dev libstb-dev libzstd-dev
-  libopenal-dev libebur128-dev sox
+  libopenal-dev libebur128-dev libreaderwriterqueue-dev sox
   xvfb xauth
   glslang-tools
   help2man file  # the man page and cpack's scan of the programs (packaging/)
