@@ -69,16 +69,13 @@ void LiveOutput::run() {
     bool source_paused = false;
     while (!stop_) {
         const bool pause = paused_;
-        bool silent = false;
-        {
-            std::lock_guard lock(mixer_.mutex());
-            mixer_.set_paused(pause);
-            silent = mixer_.silent();
-        }
-        // Paused: the mixer fades out over a few blocks, then the source stops.
-        if (pause && silent) {
+        mixer_.set_paused(pause);
+        // Paused: the mixer fades out over a few blocks, then the source stops. The
+        // game's changes are still taken, so that none pile up.
+        if (pause && mixer_.silent()) {
             if (!source_paused) alSourcePause(source_);
             source_paused = true;
+            mixer_.apply_changes();
             std::this_thread::sleep_for(std::chrono::milliseconds(10));
             continue;
         }
@@ -95,10 +92,7 @@ void LiveOutput::run() {
         while (processed-- > 0) {
             ALuint buffer = 0;
             alSourceUnqueueBuffers(source_, 1, &buffer);
-            {
-                std::lock_guard lock(mixer_.mutex());
-                mixer_.render(block.data(), kBlockFrames);
-            }
+            mixer_.render(block.data(), kBlockFrames);
             alBufferData(buffer, AL_FORMAT_STEREO_FLOAT32, block.data(), ALsizei(block.size() * sizeof(float)), kSampleRate);
             alSourceQueueBuffers(source_, 1, &buffer);
         }

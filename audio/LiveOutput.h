@@ -1,8 +1,9 @@
 #pragma once
 // The live sound: OpenAL Soft's default device, one streaming stereo source with direct
 // channels, and a thread of our own that mixes 512-frame blocks and queues them ahead
-// of the device. The thread never waits for a frame: the game only updates the voices
-// under the mixer's mutex once a tick, and the thread keeps mixing whatever it has.
+// of the device. The thread never waits for the game: the game submits each tick's
+// changes through the mixer's lock-free queue, and the thread applies what has arrived
+// before each block and keeps mixing (Mixer.h).
 // Paused, it fades the mixer out and pauses the source; no device, no thread.
 #include <atomic>
 #include <memory>

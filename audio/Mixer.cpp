@@ -31,6 +31,16 @@ Mixer::Mixer() {
     scratch_.resize(kBlock);
 }
 
+void Mixer::submit(MixChanges changes) {
+    // enqueue (not try_enqueue): a full queue grows on this side rather than dropping a change.
+    if (!changes.empty()) inbox_.enqueue(std::move(changes));
+}
+
+void Mixer::apply_changes() {
+    MixChanges changes;
+    while (inbox_.try_dequeue(changes)) changes.apply(*this);
+}
+
 void Mixer::add(Voice& voice) {
     Channel c;
     c.voice = &voice;
@@ -105,6 +115,7 @@ void Mixer::place_channel(Channel& c, const Listener& l, float tick_s) {
 }
 
 void Mixer::render(float* out, int frames) {
+    apply_changes();
     for (int done = 0; done < frames;) {
         const int n = std::min(kBlock, frames - done);
         render_block(out + 2 * done, n);

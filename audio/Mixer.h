@@ -5,15 +5,23 @@
 // soft ceiling below full scale. Positions change once a tick (place()); gains and
 // pitch are smoothed across each block, so nothing steps at a tick boundary.
 //
-// The mixer is not thread-safe by itself: the live output renders under `mutex()`,
-// and whoever updates voices holds it too.
+//
+// Two sides, and neither waits for the other. The mixing side (the live output's thread,
+// or the one thread of an offline render) renders and owns every voice: all the methods
+// below but submit() are its own. The game side never touches a voice or the mixer; it
+// builds a tick's MixChanges and submit()s them through a lock-free single-producer,
+// single-consumer queue (moodycamel's ReaderWriterQueue, Debian's
+// libreaderwriterqueue-dev), and render() applies whatever has arrived before it mixes.
+// A slow frame only means the mix keeps playing what it was last told, smoothly.
 #include <array>
 #include <memory>
-#include <mutex>
 #include <vector>
+
+#include <readerwriterqueue/readerwriterqueue.h>
 
 #include "audio/Dsp.h"
 #include "audio/Listener.h"
+#include "audio/MixChanges.h"
 #include "audio/Voice.h"
 
 namespace audio {
@@ -28,6 +36,15 @@ public:
     Mixer(const Mixer&) = delete;
     Mixer& operator=(const Mixer&) = delete;
 
+    // The game side (one thread): hands changes to the mix. Never waits; they are
+    // applied, in the order submitted, at the start of the next render().
+    void submit(MixChanges changes);
+    // The mixing side: applies everything submitted so far (render() does it first; a
+    // paused output calls it so that nothing piles up).
+    void apply_changes();
+    // Changes submitted and not yet applied (a mixing thread may be taking them now).
+    size_t pending() const { return inbox_.size_approx(); }
+
     // A persistent voice, owned by the caller, which keeps it alive while it is added.
     void add(Voice& voice);
     void remove(Voice& voice);
@@ -38,7 +55,7 @@ public:
     // how long a tick is (the Doppler rate is per sim time, never per frame time).
     void update_placement(const Listener& listener, float tick_s);
 
-    // Interleaved stereo, `frames` of it, overwriting `out`. Returns the frames rendered.
+    // Interleaved stereo, `frames` of it, overwriting `out`, after applying what was submitted.
     void render(float* out, int frames);
 
     void set_volumes(const Volumes& v) { volumes_ = v; }
@@ -51,8 +68,6 @@ public:
     bool silent() const { return paused_ && master_.value() == 0.0f; }
     // Voices now playing (persistent ones count only while audible).
     int live_voices() const;
-
-    std::mutex& mutex() { return mutex_; }
 
 private:
     struct Channel {
@@ -76,7 +91,7 @@ private:
     std::array<Smoothed, kBusCount> bus_gain_;
     Smoothed master_{1.0f, 0.02f};
     std::vector<float> scratch_;
-    std::mutex mutex_;
+    moodycamel::ReaderWriterQueue<MixChanges> inbox_{64};
 };
 
 }  // namespace audio

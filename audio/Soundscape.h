@@ -4,6 +4,11 @@
 // boat motor, tyres, rain, wind, sea, wipers, shots) are updated in place; events
 // (splashes, impacts, thuds, reversals, cues) start one-shots at the tick's first
 // sample. Reads the sim, never writes it.
+//
+// It runs on the game thread and touches no voice there: everything it sets becomes a
+// change to the mix (MixChanges), submitted once at the end of the tick, which the
+// mixing side applies before its next block (Mixer.h).
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -16,6 +21,7 @@
 #include "audio/models/GlassDrops.h"
 #include "audio/models/NoiseBed.h"
 #include "audio/models/ShotHum.h"
+#include "audio/models/Strike.h"
 #include "audio/models/Wipers.h"
 
 namespace sim {
@@ -35,17 +41,25 @@ struct SoundState {
     float engine_rpm = 0.0f;
     int gear = 1;
     float rain_bed = 0.0f;    // the rain bed's level 0..1
+    float glass_wetness = 0.0f;  // what the wipers hear of the water on the glass, 0..1
+    float squeak = 0.0f;      // the wipers' squeak, 0..1
+    float pushed_mg = 0.0f;   // the water the blades push
+    int hull_slaps = 0;       // hull points the water slapped this tick
+    float hull_rising = 0.0f; // the fastest the water rose against the hull this tick, m/s
+    float slap_energy = 0.0f; // their summed strength squared
     int events = 0;           // one-shots started this tick
 };
 
 class Soundscape {
 public:
     explicit Soundscape(Mixer& mixer);
+    // Only once nothing renders the mixer any more (a live output stopped first): it
+    // takes its voices out of the mix directly.
     ~Soundscape();
     Soundscape(const Soundscape&) = delete;
     Soundscape& operator=(const Soundscape&) = delete;
 
-    // After each tick (the mixer's mutex held by the caller when a live output runs).
+    // After each tick, on the game thread: submits the tick's changes to the mix.
     void after_tick(const sim::World& world, const Listener& listener);
     const SoundState& state() const { return state_; }
 
@@ -56,7 +70,13 @@ private:
     void shots(const sim::World& world);
     void events(const sim::World& world);
     void tank(const sim::World& world);
+    void hull(const sim::World& world);
     uint32_t next_seed() { return ++seeds_ * 2654435761u; }
+    // `f(voice)` on the mixing side, in order with the tick's other changes.
+    template <class V, class F> void tell(V& voice, F f) {
+        changes_.then([v = &voice, f = std::move(f)](Mixer&) mutable { f(*v); });
+    }
+    void strike(const StrikeSound& sound, const Placement& place);
 
     Mixer& mixer_;
     Gearbox gearbox_;
@@ -65,10 +85,16 @@ private:
     BubbleVoice sea_rain_;
     GlassDropsVoice glass_;
     WipersVoice wipers_;
-    std::map<uint64_t, std::unique_ptr<ShotHumVoice>> shot_voices_;
-    std::vector<std::pair<int, std::unique_ptr<ShotHumVoice>>> fading_shots_;  // ticks left, voice
+    // The shots' hums, keyed by shot: owned by the mixer (played as one-shots that end
+    // once released), so a shot gone is told to fade and then forgotten here.
+    std::map<uint64_t, ShotHumVoice*> shot_voices_;
+    MixChanges changes_;  // this tick's
     float boat_rpm_ = 1100.0f;
-    float boat_pitch_ = 0.0f, boat_pitch_rate_ = 0.0f;
+    float blade_water_mg_ = 0.0f;  // the water the blades meet, over about a sweep
+    // Per hull point: the water's height over it last tick and how fast it rose, and the
+    // ticks until it may slap again.
+    std::array<float, 4> immersion_{}, rising_{};
+    std::array<int, 4> slap_rest_{};
     float blade_angle_ = 0.0f, blade_turning_ = 0.0f;
     int tank_objects_ = 0;
     bool first_tick_ = true;

@@ -51,12 +51,14 @@ inline std::vector<float> mono(const std::vector<float>& stereo) {
     return m;
 }
 
-// A fourth-order Butterworth high-pass (two cascaded RBJ sections at Q 0.541 and 1.307).
-inline std::vector<float> highpass(const std::vector<float>& x, double hz) {
+// A fourth-order Butterworth high-pass or low-pass (two cascaded RBJ sections at Q 0.541 and 1.307).
+inline std::vector<float> butterworth(const std::vector<float>& x, double hz, bool high) {
     std::vector<float> y(x.begin(), x.end());
     for (double q : {0.5412, 1.3066}) {
         const double w = 2.0 * M_PI * hz / kRate, c = std::cos(w), a = std::sin(w) / (2.0 * q);
-        const double b0 = (1 + c) / 2 / (1 + a), b1 = -(1 + c) / (1 + a), b2 = b0, a1 = -2 * c / (1 + a), a2 = (1 - a) / (1 + a);
+        const double sign = high ? 1.0 : -1.0;  // (1 + c) for the high-pass, (1 - c) for the low-pass
+        const double b0 = (1 + sign * c) / 2 / (1 + a), b1 = -sign * (1 + sign * c) / (1 + a), b2 = b0,
+                     a1 = -2 * c / (1 + a), a2 = (1 - a) / (1 + a);
         double x1 = 0, x2 = 0, y1 = 0, y2 = 0;
         for (float& v : y) {
             const double in = v, out = b0 * in + b1 * x1 + b2 * x2 - a1 * y1 - a2 * y2;
@@ -65,6 +67,12 @@ inline std::vector<float> highpass(const std::vector<float>& x, double hz) {
         }
     }
     return y;
+}
+
+inline std::vector<float> highpass(const std::vector<float>& x, double hz) { return butterworth(x, hz, true); }
+inline std::vector<float> lowpass(const std::vector<float>& x, double hz) { return butterworth(x, hz, false); }
+inline std::vector<float> bandpass(const std::vector<float>& x, double lo_hz, double hi_hz) {
+    return lowpass(highpass(x, lo_hz), hi_hz);
 }
 
 // Mean square of samples [from, to).

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <map>
 
 #include "AudioAnalysis.h"
 #include "AudioReplays.h"
@@ -98,18 +99,32 @@ TEST_P(BundledReplaySound, IsLoudEnoughNeverClipsAndHearsEveryEvent) {
     const Render fx = render(GetParam(), 0, audio::Volumes{1.0f, 0.0f, 1.0f, 0.0f});
     const std::vector<float> m = mono(fx.samples);
     int events = 0, heard = 0;
+    std::map<std::string, int> kinds;
     std::string missed;
     for (size_t i = 0; i < fx.ticks.size(); ++i) {
         if (!fx.ticks[i].event) continue;
         ++events;
+        for (unsigned bit = 1; bit <= kCue; bit <<= 1)
+            if (fx.ticks[i].events & bit) ++kinds[event_names(bit)];
         // Events one tick apart share an onset.
         const bool near = onset_near(m, fx.ticks[i].tick) || (i > 0 && fx.ticks[i - 1].event && onset_near(m, fx.ticks[i - 1].tick));
         if (near) ++heard;
-        else missed += " " + std::to_string(fx.ticks[i].tick);
+        else missed += " " + std::to_string(fx.ticks[i].tick) + " (" + event_names(fx.ticks[i].events) + ")";
     }
     EXPECT_EQ(heard, events) << "events with no onset within a tick, at ticks" << missed;
+    // Each kind of event is in some bundled replay, so none is checked vacuously.
+    const std::map<std::string, unsigned> expected{
+        {"harbour_boat", kSplash | kCue},       {"harbour_drive", kCue},
+        {"harbour_dust", kKnock | kShotFired | kShotImpact},
+        {"harbour_energy", kShotFired | kShotImpact | kSplash},
+        {"harbour_goals", kCue | kSplash},      {"harbour_rain", kWiperReversal}, {"harbour_tank", 0u}};
+    unsigned seen = 0;
+    for (const TickLog& t : fx.ticks) seen |= t.events;
+    EXPECT_EQ(seen & expected.at(GetParam()), expected.at(GetParam())) << "missing: " << event_names(expected.at(GetParam()) & ~seen);
     std::cout << GetParam() << ": " << l.integrated_lufs << " LUFS, true peak " << l.true_peak_dbtp << " dBTP, "
-              << events << " events, " << heard << " heard\n";
+              << events << " events, " << heard << " heard:";
+    for (const auto& [kind, n] : kinds) std::cout << " " << n << " " << kind;
+    std::cout << "\n";
 }
 
 INSTANTIATE_TEST_SUITE_P(Replays, BundledReplaySound,

@@ -10,7 +10,7 @@ packages=(
   libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev libopenexr-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev
   libgtest-dev libbenchmark-dev libimgui-dev libstb-dev libzstd-dev
-  libopenal-dev libebur128-dev sox
+  libopenal-dev libebur128-dev libreaderwriterqueue-dev sox
   libavformat-dev libavcodec-dev libswscale-dev  # replay --video (GPL: docs/REPLAYS.md#video-export)
   xvfb xauth
   glslang-tools

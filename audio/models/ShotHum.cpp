@@ -32,7 +32,7 @@ bool ShotHumVoice::render(float* out, int frames, float pitch) {
         const float x = tone_.process(0.6f * square + 0.5f * tri + 0.08f * noise_.next());
         out[n] += x * level * 0.1f;
     }
-    return audible();
+    return !released_ || audible();
 }
 
 }  // namespace audio

@@ -14,6 +14,11 @@ public:
     explicit ShotHumVoice(uint32_t seed);
     // Once a tick: growth 0..1, brightness 0..1 (fades after a hit), sway -1..1.
     void set(float growth, float brightness, float sway);
+    // The shot is gone: fade out and end (the mixer then drops it).
+    void release() {
+        level_.set(0.0f);
+        released_ = true;
+    }
     bool render(float* out, int frames, float pitch) override;
     bool audible() const override { return level_.target() > 0.0f || level_.value() > 1e-4f; }
 
@@ -22,6 +27,7 @@ private:
     Biquad tone_;
     Noise noise_;
     float phase_ = 0.0f, phase2_ = 0.0f;
+    bool released_ = false;
 };
 
 }  // namespace audio

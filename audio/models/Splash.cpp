@@ -8,7 +8,7 @@
 
 namespace audio {
 
-void play_splash(Mixer& mixer, const SplashCause& cause, glm::vec3 position, uint32_t seed, int delay) {
+void play_splash(MixChanges& mix, const SplashCause& cause, glm::vec3 position, uint32_t seed, int delay) {
     Noise rng(seed * 747796405u + 1u);
     const float energy_j = 0.5f * cause.mass_kg * cause.speed_mps * cause.speed_mps;
     // Loudness by the entry's energy, compressed: a pebble is heard, a stone is not deafening.
@@ -28,7 +28,7 @@ void play_splash(Mixer& mixer, const SplashCause& cause, glm::vec3 position, uin
     slap.seed = seed;
     auto v = std::make_unique<StrikeVoice>(Bus::Effects, slap);
     v->place = place;
-    mixer.play(std::move(v));
+    mix.play(std::move(v));
 
     // The crown's spray falling back: droplet ticks over the next half second.
     auto bubbles = std::make_unique<BubbleVoice>(Bus::Effects, seed + 1u);
@@ -45,7 +45,7 @@ void play_splash(Mixer& mixer, const SplashCause& cause, glm::vec3 position, uin
         bubbles->add(r, 0.9f * level, delay + int(rng.unit() * 0.04f * float(kSampleRate)));
     }
     bubbles->place = place;
-    mixer.play(std::move(bubbles));
+    mix.play(std::move(bubbles));
 
     if (cause.sinks && cause.mass_kg > 1.0f) {
         // The cavity closes behind a heavy stone: a second, deeper splash, and the jet.
@@ -59,7 +59,7 @@ void play_splash(Mixer& mixer, const SplashCause& cause, glm::vec3 position, uin
         second.seed = seed + 2u;
         auto s = std::make_unique<StrikeVoice>(Bus::Effects, second);
         s->place = place;
-        mixer.play(std::move(s));
+        mix.play(std::move(s));
     }
 }
 

@@ -7,7 +7,7 @@
 // (the crown, the cavity, the jet).
 #include <memory>
 
-#include "audio/Mixer.h"
+#include "audio/MixChanges.h"
 
 namespace audio {
 
@@ -18,7 +18,7 @@ struct SplashCause {
     bool sinks = false;
 };
 
-// Adds the splash's voices to the mixer at `position`; `seed` picks its randomness.
-void play_splash(Mixer& mixer, const SplashCause& cause, glm::vec3 position, uint32_t seed, int delay);
+// Starts the splash's voices at `position` (as changes to the mix); `seed` picks its randomness.
+void play_splash(MixChanges& mix, const SplashCause& cause, glm::vec3 position, uint32_t seed, int delay);
 
 }  // namespace audio

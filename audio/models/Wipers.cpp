@@ -9,15 +9,18 @@ WipersVoice::WipersVoice(uint32_t seed) : Voice(Bus::Effects), noise_(seed * 110
     swish_band_.bandpass(2000.0f, 0.9f);
     squeak_band_.bandpass(1150.0f, 6.0f);
     hum_low_.lowpass(700.0f, 0.7f);
-    stick_.set_cutoff(35.0f);
+    stick_.set_cutoff(25.0f);
 }
 
 void WipersVoice::set(float blade_speed, float wetness, bool running) {
     motor_.set(running ? 0.35f + 0.65f * blade_speed : 0.0f);
     swish_.set(blade_speed * std::clamp(wetness, 0.0f, 1.0f));
-    // Squeaks where the glass is nearly dry but the blade still moves over it.
+    squeak_.set(squeak_for(blade_speed, wetness));
+}
+
+float WipersVoice::squeak_for(float blade_speed, float wetness) {
     const float dry = std::clamp((0.35f - wetness) / 0.3f, 0.0f, 1.0f);
-    squeak_.set(blade_speed > 0.05f ? dry * std::min(1.0f, blade_speed * 1.5f) : 0.0f);
+    return blade_speed > 0.05f ? dry * std::min(1.0f, blade_speed * 1.5f) : 0.0f;
 }
 
 bool WipersVoice::render(float* out, int frames, float) {
@@ -34,12 +37,17 @@ bool WipersVoice::render(float* out, int frames, float) {
         float x = hum_low_.process(saw) * motor * 0.08f;
         const float white = noise_.next();
         x += swish_band_.process(white) * swish * 0.5f;
-        // Stick-slip: the squeak sounds while a slowly wandering friction envelope is high.
-        const float grip = stick_.lowpass(std::fabs(white));
-        squeak_phase_ += (1150.0f + 220.0f * grip) / float(kSampleRate);
+        // Stick-slip: the rubber grips and lets go in stretches of 20-80 ms; while it
+        // chatters the squeak sounds, its pitch rising with the grip.
+        if (--chatter_left_ <= 0) {
+            chatter_target_ = noise_.unit();
+            chatter_left_ = int((0.02f + 0.06f * noise_.unit()) * float(kSampleRate));
+        }
+        chatter_ = stick_.lowpass(chatter_target_);
+        squeak_phase_ += (1150.0f + 220.0f * chatter_) / float(kSampleRate);
         if (squeak_phase_ >= 1.0f) squeak_phase_ -= 1.0f;
-        const float burst = std::max(0.0f, grip - 0.45f) * 4.0f;
-        x += squeak_band_.process(2.0f * squeak_phase_ - 1.0f) * burst * squeak * 0.5f;
+        const float burst = std::max(0.0f, chatter_ - 0.35f) * 1.6f;
+        x += squeak_band_.process(2.0f * squeak_phase_ - 1.0f) * burst * squeak * 0.6f;
         out[n] += x;
     }
     return true;

@@ -1,7 +1,6 @@
 #include "game/audio/LiveSound.h"
 
 #include <iostream>
-#include <mutex>
 
 namespace game {
 
@@ -23,18 +22,16 @@ LiveSound::~LiveSound() {
 }
 
 void LiveSound::toggle_mute() {
-    std::lock_guard lock(sound_.mixer().mutex());
-    sound_.mixer().set_muted(!sound_.mixer().muted());
-}
-
-bool LiveSound::muted() {
-    std::lock_guard lock(sound_.mixer().mutex());
-    return sound_.mixer().muted();
+    muted_ = !muted_;
+    audio::MixChanges change;
+    change.then([muted = muted_](audio::Mixer& m) { m.set_muted(muted); });
+    sound_.mixer().submit(std::move(change));
 }
 
 void LiveSound::set_volumes(const audio::Volumes& v) {
-    std::lock_guard lock(sound_.mixer().mutex());
-    sound_.mixer().set_volumes(v);
+    audio::MixChanges change;
+    change.then([v](audio::Mixer& m) { m.set_volumes(v); });
+    sound_.mixer().submit(std::move(change));
 }
 
 }  // namespace game

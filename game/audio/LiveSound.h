@@ -17,13 +17,16 @@ public:
     void after_tick(const sim::World& world) { sound_.after_tick(world); }
     void set_paused(bool paused) { output_->set_paused(paused); }
     void toggle_mute();
-    bool muted();
+    bool muted() const { return muted_; }
     void set_volumes(const audio::Volumes& v);
+    // Blocks the device ran dry before the mixing thread refilled it, so far.
+    int underruns() const { return output_->underruns(); }
 
 private:
     explicit LiveSound(CameraTrack cameras) : sound_(std::move(cameras)) {}
     SessionSound sound_;
     std::unique_ptr<audio::LiveOutput> output_;  // after the mixer it reads: stopped first
+    bool muted_ = false;  // as last told to the mixer
 };
 
 }  // namespace game

@@ -1,7 +1,5 @@
 #include "game/audio/SessionSound.h"
 
-#include <mutex>
-
 #include "sim/player/CameraRig.h"
 
 namespace game {
@@ -12,7 +10,6 @@ SessionSound::SessionSound(CameraTrack cameras, ListenerFor listener)
 void SessionSound::after_tick(const sim::World& world) {
     const sim::CameraView presented = cameras_.view_at(world.tick(), world.get<sim::CameraRig>().view());
     const audio::Listener listener = listener_(world, presented);
-    std::lock_guard lock(mixer_.mutex());
     soundscape_.after_tick(world, listener);
 }
 

@@ -16,7 +16,7 @@ public:
     using ListenerFor = std::function<audio::Listener(const sim::World&, const sim::CameraView& presented)>;
 
     explicit SessionSound(CameraTrack cameras = {}, ListenerFor listener = audio::listener_for);
-    // Under the mixer's mutex: a live output's thread may be mixing.
+    // Hands the tick's changes to the mixer; never waits for a mixing thread.
     void after_tick(const sim::World& world);
 
     audio::Mixer& mixer() { return mixer_; }

@@ -17,6 +17,7 @@ void draw_sound_panel(LiveSound& sound, Settings::Volumes& volume) {
         ImGui::SliderFloat("engine", &volume.engine, 0.0f, 1.0f);
         ImGui::SliderFloat("effects", &volume.effects, 0.0f, 1.0f);
         ImGui::SliderFloat("ambience", &volume.ambience, 0.0f, 1.0f);
+        ImGui::Text("device ran dry: %d", sound.underruns());
     }
     ImGui::End();
 }
