@@ -1,8 +1,10 @@
 #pragma once
 // What the bench groups, the bench command and the timedemo share: wall-clock time since
-// a start on the steady clock, and printf-style formatting for case names and notes.
+// a start on the steady clock, printf-style formatting for case names and notes, and the
+// machine's load for them.
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <string>
 
 namespace game {
@@ -24,6 +26,15 @@ std::string fmt(const char* format, Values... values) {
     std::string text(size_t(length), '\0');
     std::snprintf(text.data(), text.size() + 1, format, values...);
     return text;
+}
+
+// The one-minute load average (/proc/loadavg's first field), "unknown" without it: a
+// timing's note says how busy the machine was.
+inline std::string load_average() {
+    std::ifstream in("/proc/loadavg");
+    std::string one;
+    in >> one;
+    return one.empty() ? "unknown" : one;
 }
 
 }  // namespace game

@@ -52,12 +52,13 @@ void bench_play(BenchReport& report, bool quick) {
                 std::cerr << "bench: play " << label << "\n";
                 GameSession session = GameSession::open(replay.header.level_id, 1, replay.header.seed);
                 OffscreenScreen screen(size.width, size.height);
+                const std::string load_before = load_average();
                 const TimedemoRun run = run_timedemo(replay, path.filename().string(), session, screen, quality);
                 const TimedemoSummary s = summarise(run);
-                const std::string note = fmt("%zu frames, %.1f fps, mean %.1f ms, p95 %.1f ms, game/wall %.2f, fill %.2f ms%s",
-                                             s.frames, s.average_fps, s.frame_ms.mean, s.frame_ms.p95,
-                                             s.wall_s > 0 ? s.game_s / s.wall_s : 0.0, run.fill_ms,
-                                             run.desync ? ", DESYNC" : "");
+                const std::string note =
+                    fmt("%zu frames, %.1f fps, mean %.1f ms, p95 %.1f ms, game/wall %.2f, fill %.2f ms, load %s-%s%s",
+                        s.frames, s.average_fps, s.frame_ms.mean, s.frame_ms.p95, s.wall_s > 0 ? s.game_s / s.wall_s : 0.0,
+                        run.fill_ms, load_before.c_str(), load_average().c_str(), run.desync ? ", DESYNC" : "");
                 const double fill = std::max(run.fill_ms, 1e-6);
                 report.add({"play", label + ": mean frame time in fills", s.frame_ms.mean / fill, "fills",
                             is_auto ? std::optional(kAutoMeanFills) : is_high ? std::optional(kHighMeanFills) : std::nullopt, false, note});
