@@ -25,9 +25,4 @@ void MixChanges::apply(Mixer& mixer) {
     list_.clear();
 }
 
-void MixChanges::append(MixChanges&& later) {
-    for (std::unique_ptr<Change>& c : later.list_) list_.push_back(std::move(c));
-    later.list_.clear();
-}
-
 }  // namespace audio

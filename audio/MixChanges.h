@@ -28,11 +28,8 @@ public:
     void update_placement(const Listener& listener, float tick_s);
 
     bool empty() const { return list_.empty(); }
-    size_t size() const { return list_.size(); }
     // In order, then the list is empty.
     void apply(Mixer& mixer);
-    // Appends `later`'s changes after these.
-    void append(MixChanges&& later);
 
 private:
     struct Change {

@@ -2,9 +2,8 @@
 // Sums the voices into stereo: per voice distance attenuation, equal-power panning,
 // a Doppler factor from the smoothed rate at which its distance changes, and a low-pass
 // when the listener is in the cabin and the voice outside; then the bus volumes and a
-// soft ceiling below full scale. Positions change once a tick (place()); gains and
-// pitch are smoothed across each block, so nothing steps at a tick boundary.
-//
+// soft ceiling below full scale. Positions change once a tick (update_placement()); gains
+// and pitch are smoothed across each block, so nothing steps at a tick boundary.
 //
 // Two sides, and neither waits for the other. The mixing side (the live output's thread,
 // or the one thread of an offline render) renders and owns every voice: all the methods
