@@ -2,11 +2,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <ctime>
 #include <filesystem>
 
 #include "game/DataPaths.h"
 #include "game/bench/BenchSupport.h"
+#include "game/bench/TrivialFill.h"
 #include "game/capture/VideoExport.h"
 
 namespace game {
@@ -40,12 +42,16 @@ void bench_video(BenchReport& report, bool quick) {
     const uintmax_t bytes = fs::file_size(out);
     fs::remove(out);
     const double frames = range.frames();
+    // The machine's speed at the time (it may be shared): a trivial fill at the size.
+    const double fill_ms = median_ms(trivial_fill_samples(format.width, format.height, 9));
     const std::string what = fmt("%u frames of harbour_goals, H.264 CRF %d and AAC", range.frames(), format.crf);
     report.add({"video", "export @1280x720 60 fps", frames / times.total, "frames/s", std::nullopt, true,
                 what + fmt(", %.0f s of CPU time for %.1f s of wall time", cpu, times.total)});
     report.add({"video", "encoder share of the export", 100.0 * times.encode / times.total, "%", std::nullopt, false,
                 "wall time in the encoder's calls (x264's own threads run beside the rendering)"});
     report.add({"video", "render and read back per frame", 1e3 * times.render / frames, "ms"});
+    report.add({"video", "export per frame in fills", 1e3 * times.total / frames / std::max(fill_ms, 1e-6), "fills",
+                std::nullopt, false, fmt("a trivial 1280x720 fill took %.2f ms after the export", fill_ms)});
     report.add({"video", "encode per frame", 1e3 * times.encode / frames, "ms"});
     report.add({"video", "file size per second of video", double(bytes) / 1024.0 / (frames / format.fps), "KiB"});
 }
