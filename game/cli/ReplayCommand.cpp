@@ -70,7 +70,7 @@ int replay_command(const std::vector<std::string>& argv) {
     // not, and the check says so. The bundled replays' checks require them.
     const bool require_goldens = args.flag("--require-goldens");
     const int threads = args.integer("--threads", 1, 1, 64);
-    const QualityChoice quality = quality_option(args);
+    (void)quality_option(args);  // a bad --quality is refused before the replay is read
     FrameSelection frames = args.value("--frames") ? FrameSelection::parse(*args.value("--frames")) : FrameSelection{};
 
     Replay replay = read_replay(path, ReadOptions{args.flag("--strict")});
