@@ -101,6 +101,8 @@ void PlayLoop::run(const LoopHooks& hooks) {
     LoopViewer* const viewer = hooks.viewer;
     bool keyboard_drives = !hooks.next_input;
     if (keyboard_drives) queue_start_presses();
+    // A replay viewer paces the ticks until the player takes over.
+    const auto viewer_paces = [&] { return viewer && !keyboard_drives; };
     // Where the window is once shown (a window manager may place it after it is made).
     std::optional<std::array<int, 4>> placement_at_start;
     bool input_ended = false;
@@ -118,13 +120,13 @@ void PlayLoop::run(const LoopHooks& hooks) {
         const auto is_idle = [&] {
             return paused_ || menu_.is_open() || minimised || input_ended ||
                    (options_.pause_when_unfocused && !screen_.focused()) ||
-                   (viewer && !keyboard_drives && viewer->still());
+                   (viewer_paces() && viewer->still());
         };
         const bool was_idle = is_idle();
         // Idle with its frame shown (or nothing to show): sleep until something happens.
         screen_.handle_events(was_idle && (idle_frame_shown || minimised) ? kIdleWaitSeconds : 0.0);
         for (int key : screen_.take_key_presses()) on_key_press(key, keyboard_drives, viewer);
-        if (viewer && !keyboard_drives && viewer->handed_over()) {
+        if (viewer_paces() && viewer->handed_over()) {
             // A take over: the keyboard drives on from this tick, seen by the player's camera.
             keyboard_drives = true;
             options_.cameras = CameraTrack{};
@@ -158,8 +160,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
         } else {
             for (sim::Control c : start_presses_) input_.press(c);
             start_presses_.clear();
-            const bool viewer_paces = viewer && !keyboard_drives;
-            const int due = viewer_paces ? viewer->ticks_due(std::chrono::duration<double>(elapsed).count())
+            const int due = viewer_paces() ? viewer->ticks_due(std::chrono::duration<double>(elapsed).count())
                                          : clock.advance(elapsed);
             for (int n = due; n > 0; --n) {
                 std::optional<sim::TickInput> input = keyboard_drives ? input_.next_tick() : hooks.next_input();
@@ -181,7 +182,7 @@ void PlayLoop::run(const LoopHooks& hooks) {
         }
 
         record.render_scale = renderer_->render_scale();
-        draw_frame(hooks, screen_.size(), viewer && !keyboard_drives ? viewer->alpha() : clock.alpha());
+        draw_frame(hooks, screen_.size(), viewer_paces() ? viewer->alpha() : clock.alpha());
         screen_.present();
         const auto shown = Clock::now();
         fps_.frame(shown);
