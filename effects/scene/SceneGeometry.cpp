@@ -21,7 +21,13 @@ Model glowing(Model m, glm::vec3 emissive) {
     return m;
 }
 
-// The world-space box around a model's bounds placed by `transform`.
+// The model matrix, and the normal matrix once per draw on the CPU, not per vertex on the GPU.
+void place(const gl::Program& p, const glm::mat4& model, bool depth_only) {
+    p.set("u_model", model);
+    if (!depth_only) p.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model))));
+}
+}  // namespace
+
 std::pair<glm::vec3, glm::vec3> world_box(const Model& m, const glm::mat4& transform) {
     glm::vec3 lo(0.0f), hi(0.0f);
     for (int c = 0; c < 8; ++c) {
@@ -32,13 +38,6 @@ std::pair<glm::vec3, glm::vec3> world_box(const Model& m, const glm::mat4& trans
         hi = c == 0 ? p : glm::max(hi, p);
     }
     return {lo, hi};
-}
-
-// The model matrix, and the normal matrix once per draw on the CPU, not per vertex on the GPU.
-void place(const gl::Program& p, const glm::mat4& model, bool depth_only) {
-    p.set("u_model", model);
-    if (!depth_only) p.set("u_normal_matrix", glm::mat3(glm::transpose(glm::inverse(model))));
-}
 }
 
 SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)

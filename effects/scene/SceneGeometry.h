@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "effects/gl/Program.h"
@@ -15,6 +16,9 @@
 #include "sim/world/World.h"
 
 namespace effects {
+
+// The world-space box around a model's bounds placed by `transform`.
+std::pair<glm::vec3, glm::vec3> world_box(const Model& m, const glm::mat4& transform);
 
 class SceneGeometry {
 public:

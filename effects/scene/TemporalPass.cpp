@@ -3,9 +3,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <string>
+#include <vector>
 
 #include "effects/gl/EmptyVertexArray.h"
 #include "effects/gl/PipelineState.h"
+#include "effects/scene/SceneGeometry.h"
+#include "effects/scene/ScreenRect.h"
 
 namespace effects {
 
@@ -17,6 +21,13 @@ float radical_inverse(uint64_t i, uint64_t base) {
     return result;
 }
 
+// The viewport less `hole` ({x0, y0, x1, y1}, x1/y1 exclusive; empty: none), as up to
+// four bands: below, above, then left and right of it.
+std::vector<glm::ivec4> rects_around(glm::ivec4 hole, int width, int height) {
+    if (hole.z <= hole.x || hole.w <= hole.y) return {{0, 0, width, height}};
+    return {{0, 0, width, hole.y}, {0, hole.w, width, height}, {0, hole.y, hole.x, hole.w}, {hole.z, hole.y, width, hole.w}};
+}
+
 }  // namespace
 
 glm::vec2 temporal_jitter_px(uint64_t frame) {
@@ -24,10 +35,17 @@ glm::vec2 temporal_jitter_px(uint64_t frame) {
     return {radical_inverse(i, 2) - 0.5f, radical_inverse(i, 3) - 0.5f};
 }
 
-TemporalPass::TemporalPass()
-    : program_(gl::Program::from_files("temporal", {"common/fullscreen.vert.glsl", "scene/temporal.frag.glsl"})),
-      from_hdr_(gl::Program::from_files("temporal.hdr", {"common/fullscreen.vert.glsl", "scene/temporal.frag.glsl"},
-                                        {"FROM_HDR"})) {}
+TemporalPass::TemporalPass() {
+    for (const bool from_hdr : {false, true})
+        for (const bool vehicle : {false, true}) {
+            std::vector<std::string> defines;
+            if (from_hdr) defines.emplace_back("FROM_HDR");
+            if (vehicle) defines.emplace_back("VEHICLE");
+            programs_[from_hdr][vehicle] = gl::Program::from_files(
+                std::string("temporal") + (from_hdr ? ".hdr" : "") + (vehicle ? ".vehicle" : ""),
+                {"common/fullscreen.vert.glsl", "scene/temporal.frag.glsl"}, defines);
+        }
+}
 
 void TemporalPass::register_params(ParamRegistry& params) {
     params.add("temporal", "this frame's weight", &current_weight_, 0.05f, 1.0f);
@@ -47,34 +65,54 @@ void TemporalPass::render(const FrameContext& frame) {
         glm::translate(glm::mat4(1.0f), glm::vec3(-camera.jitter_ndc, 0.0f)) * camera.view_proj;
     // The vehicle nearest the eye (the one the camera rides or follows) moves with its
     // pose, not with the world: its pixels' last place is through its last pose.
-    const sim::Pose& ridden = glm::distance(frame.poses.car.position, camera.eye) <=
-                                      glm::distance(frame.poses.boat.position, camera.eye)
-                                  ? frame.poses.car
-                                  : frame.poses.boat;
+    const bool car_nearer = glm::distance(frame.poses.car.position, camera.eye) <=
+                            glm::distance(frame.poses.boat.position, camera.eye);
+    const sim::Pose& ridden = car_nearer ? frame.poses.car : frame.poses.boat;
     const glm::mat4 vehicle = ridden.matrix();
     const glm::mat4 last_vehicle = history ? last_vehicle_ : vehicle;
+    // The pixels the vehicle can cover: only they need its candidate (a second history
+    // fetch a pixel).
+    const SceneDesc& desc = frame.resources.desc;
+    const int model = car_nearer ? desc.car_model : desc.boat_model;
+    glm::ivec4 vehicle_rect(0);
+    if (model >= 0) {
+        const auto [lo, hi] = world_box(desc.models[size_t(model)], vehicle);
+        vehicle_rect = screen_rect_of_box(camera.view_proj, camera.near_m, lo, hi, t.width(), t.height(), 2);
+    }
 
     t.history_fbo().bind();
     glViewport(0, 0, t.width(), t.height());
     gl::PipelineScope state(gl::kFullScreen);
     const bool from_hdr = tonemapped_by_temporal(frame.resources.quality);
-    const gl::Program& program = from_hdr ? from_hdr_ : program_;
-    program.use();
-    program.set("u_current", 0);
-    program.set("u_history", 1);
-    program.set("u_depth", 2);
-    if (from_hdr) program.set("u_exposure", frame.resources.exposure);
-    // From this frame's window position and depth (drawn jittered) to where that point
-    // was in the last frame's unjittered view: as a still part of the world, or as a
-    // point on the vehicle; what else moves (thrown objects, water) is left to the clamp.
-    program.set("u_reproject", last_view_proj_ * camera.inv_view_proj);
-    program.set("u_reproject_vehicle", last_view_proj_ * last_vehicle * glm::inverse(vehicle) * camera.inv_view_proj);
-    program.set("u_current_weight", history ? current_weight_ : 1.0f);
-    (from_hdr ? t.colour() : frame.resources.quality.antialias ? t.antialiased() : t.display()).bind(0);
+    const gl::Texture& current = from_hdr ? t.colour() : frame.resources.quality.antialias ? t.antialiased() : t.display();
+    current.bind(0);
     t.previous_history().bind(1);
     t.depth().bind(2);
     gl::bind_empty_vertex_array();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    for (const bool with_vehicle : {false, true}) {
+        const gl::Program& program = programs_[from_hdr][with_vehicle];
+        program.use();
+        program.set("u_current", 0);
+        program.set("u_history", 1);
+        program.set("u_depth", 2);
+        if (from_hdr) program.set("u_exposure", frame.resources.exposure);
+        // From this frame's window position and depth (drawn jittered) to where that
+        // point was in the last frame's unjittered view: as a still part of the world,
+        // or as a point on the vehicle; what else moves (thrown objects, water) is left
+        // to the clamp.
+        program.set("u_reproject", last_view_proj_ * camera.inv_view_proj);
+        if (with_vehicle)
+            program.set("u_reproject_vehicle", last_view_proj_ * last_vehicle * glm::inverse(vehicle) * camera.inv_view_proj);
+        program.set("u_current_weight", history ? current_weight_ : 1.0f);
+        for (const glm::ivec4& r : with_vehicle ? std::vector<glm::ivec4>{vehicle_rect}
+                                                : rects_around(vehicle_rect, t.width(), t.height())) {
+            if (r.z <= r.x || r.w <= r.y) continue;
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+    }
+    glDisable(GL_SCISSOR_TEST);
 
     last_view_proj_ = unjittered;
     last_vehicle_ = vehicle;

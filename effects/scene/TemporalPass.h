@@ -22,8 +22,9 @@ namespace effects {
 // nearer this frame's colour is taken. Over a few frames an edge's pixels take its
 // coverage instead of all-or-nothing: the scene is anti-aliased before the upscale
 // enlarges it, and a small scene's stairs do not show.
-// The neighbourhood is read as five texels (the pixel and the four beside it): on
-// llvmpipe every fetch costs about as much as the arithmetic of a whole pixel. Without
+// The neighbourhood is the pixel's 2x2 quad, read through the fine derivatives rather
+// than fetched: on llvmpipe every fetch costs about as much as the arithmetic of a whole
+// pixel. Only the pixels of the vehicle's screen box fetch its candidate. Without
 // FXAA it reads the HDR colour and does the tone map itself (tonemapped_by_temporal):
 // one pass over the scene's pixels instead of two, and one image fewer written and read.
 class TemporalPass final : public Pass {
@@ -34,8 +35,10 @@ public:
     void register_params(ParamRegistry& params) override;
 
 private:
-    gl::Program program_;    // resolves the tone-mapped display image (after FXAA)
-    gl::Program from_hdr_;   // tone maps the HDR colour as it resolves it
+    // [from_hdr][vehicle]: from_hdr tone maps the HDR colour as it resolves it (else it
+    // resolves the tone-mapped display image, after FXAA); vehicle adds the vehicle's
+    // candidate (drawn over its screen box only).
+    gl::Program programs_[2][2];
     float current_weight_ = 0.15f;  // of this frame in the blend: about the last 7 frames kept
     bool has_history_ = false;
     uint64_t history_generation_ = 0;  // SceneTargets' generation the history was drawn at

@@ -1,12 +1,18 @@
 #version 450 core
 // Temporal upsampling's resolve (TemporalPass), at the scene's size: this frame's
 // tone-mapped pixel (drawn with a sub-pixel jitter) blended into the last resolved frame,
-// read where this pixel's point was in it and clamped to the range of this pixel and the
-// four beside it, so that what moved or came into view leaves no ghost. Blended in the
-// display's encoding: what it smooths is edges, where that is what the eye compares.
+// read where this pixel's point was in it and clamped to the range of this pixel, the four
+// beside it and its quad's diagonal, so that what moved or came into view leaves no
+// ghost. The quad's pixels come from the fine derivatives, not from fetches: a fragment
+// shader runs a quad at a time, and on llvmpipe a fetch costs as much as the rest of the
+// pixel's arithmetic.
+// Blended in the display's encoding: what it smooths is edges, where that is what the eye
+// compares.
 // FROM_HDR: u_current is the HDR scene colour and the tone map is done here; it rises
 // channel by channel, so the neighbourhood's range is taken in HDR and its two ends tone
 // mapped (three tone maps a pixel, not five).
+// VEHICLE: a second candidate for where the point was, through the last pose of the
+// vehicle nearest the eye; TemporalPass draws it only over that vehicle's pixels.
 #ifdef FROM_HDR
 #include "common/tonemap.glsl"
 uniform float u_exposure;
@@ -21,14 +27,19 @@ layout(location = 0) out vec4 o_colour;
 
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
-    const ivec2 last = textureSize(u_current, 0) - 1;
+    const ivec2 size = textureSize(u_current, 0);
     vec3 c = texelFetch(u_current, p, 0).rgb;
-    const vec3 l = texelFetch(u_current, max(p - ivec2(1, 0), ivec2(0)), 0).rgb;
-    const vec3 r = texelFetch(u_current, min(p + ivec2(1, 0), last), 0).rgb;
-    const vec3 d = texelFetch(u_current, max(p - ivec2(0, 1), ivec2(0)), 0).rgb;
-    const vec3 u = texelFetch(u_current, min(p + ivec2(0, 1), last), 0).rgb;
-    vec3 lo = min(c, min(min(l, r), min(d, u)));
-    vec3 hi = max(c, max(max(l, r), max(d, u)));
+    // The four beside it: the two within its quad from the fine derivatives, the two
+    // outside it fetched. With the quad's diagonal, the range covers both sides of an
+    // edge in x and in y, which the jittered frames' blend needs to keep.
+    const ivec2 s = ivec2((p.x & 1) == 0 ? 1 : -1, (p.y & 1) == 0 ? 1 : -1);
+    const vec3 across = c + float(s.x) * dFdxFine(c);
+    const vec3 beside = c + float(s.y) * dFdyFine(c);
+    const vec3 diagonal = across + float(s.y) * dFdyFine(across);
+    const vec3 out_x = texelFetch(u_current, clamp(p - ivec2(s.x, 0), ivec2(0), size - 1), 0).rgb;
+    const vec3 out_y = texelFetch(u_current, clamp(p - ivec2(0, s.y), ivec2(0), size - 1), 0).rgb;
+    vec3 lo = min(min(min(c, across), min(beside, diagonal)), min(out_x, out_y));
+    vec3 hi = max(max(max(c, across), max(beside, diagonal)), max(out_x, out_y));
 #ifdef FROM_HDR
     c = tonemap(c * u_exposure);
     lo = tonemap(lo * u_exposure);
@@ -36,11 +47,12 @@ void main() {
 #endif
 
     const float depth = texelFetch(u_depth, p, 0).r;
-    const vec2 ndc = (gl_FragCoord.xy / vec2(last + 1)) * 2.0 - 1.0;
+    const vec2 ndc = (gl_FragCoord.xy / vec2(size)) * 2.0 - 1.0;
     const vec4 point = vec4(ndc, depth * 2.0 - 1.0, 1.0);
     vec4 before = u_reproject * point;
     vec2 uv = (before.xy / before.w) * 0.5 + 0.5;
     vec3 h = texture(u_history, uv).rgb;
+#ifdef VEHICLE
     // Two candidates for where the point was (the world's, the vehicle's): the one whose
     // history is nearer this frame's colour.
     const vec4 before_vehicle = u_reproject_vehicle * point;
@@ -51,6 +63,7 @@ void main() {
         uv = uv_vehicle;
         h = h_vehicle;
     }
+#endif
     h = clamp(h, lo, hi);
     // Off the last frame's edge there is nothing to blend with.
     const bool inside = all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) && before.w > 0.0;
