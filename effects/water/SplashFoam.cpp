@@ -119,16 +119,19 @@ void SplashFoam::rasterise(int64_t now, float tick_s, const FoamLook& look) {
         for (int j = j0; j <= j1; ++j) {
             const float dy = float(j) - c.y;
             float* row = accum_.data() + size_t(j) * size_t(side);
+            // Without a branch, so the row vectorises: outside the disc q is 0 and the
+            // texel gains exactly nothing.
             for (int i = i0; i <= i1; ++i) {
                 const float dx = float(i) - c.x;
-                const float q = 1.0f - (dx * dx + dy * dy) * inv_r2;
-                if (q > 0.0f) row[i] += strength * q * q;
+                const float q = std::max(0.0f, 1.0f - (dx * dx + dy * dy) * inv_r2);
+                row[i] += strength * q * q;
             }
         }
     }
     field_.texels.resize(accum_.size());
+    // Most of the map is open water: no exponential where no patch reached.
     for (size_t t = 0; t < accum_.size(); ++t)
-        field_.texels[t] = uint8_t(std::lround(255.0f * (1.0f - std::exp(-accum_[t]))));
+        field_.texels[t] = accum_[t] == 0.0f ? 0 : uint8_t(std::lround(255.0f * (1.0f - std::exp(-accum_[t]))));
 }
 
 }  // namespace effects
