@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 packages=(
   build-essential cmake pkg-config git
-  libglfw3-dev libglm-dev libtinygltf-dev libopenimageio-dev libopenexr-dev
+  libglfw3-dev libglm-dev libtinygltf-dev libpng-dev libopenexr-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri nlohmann-json3-dev
   libgtest-dev libbenchmark-dev libimgui-dev libstb-dev libzstd-dev
   libopenal-dev libebur128-dev libreaderwriterqueue-dev sox

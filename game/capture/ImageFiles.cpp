@@ -1,19 +1,18 @@
 #include "game/capture/ImageFiles.h"
 #include "game/capture/CaptureError.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include <png.h>
 
 #include <fcntl.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace game {
 
@@ -88,26 +87,21 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
     check_image(path, image);
     create_parent_directories(path);
 
-    // Encoded in memory, then written with every write checked: OpenImageIO's PNG
-    // writer does not report a failed write (a full disk), which would otherwise put a
-    // truncated PNG under `path`.
-    std::vector<unsigned char> encoded;
-    OIIO::Filesystem::IOVecOutput memory(encoded);
+    // Encoded in memory (libpng's simplified API: 8-bit RGBA stored as given, straight
+    // alpha), then written with every write checked, so a failed write (a full disk)
+    // never leaves a truncated PNG under `path`.
     auto fail = [&](const std::string& why) { throw CaptureError("cannot write " + quoted(path) + ": " + why); };
-    auto out = OIIO::ImageOutput::create("png");
-    if (!out) fail("OpenImageIO has no PNG writer: " + OIIO::geterror());
-    if (!out->supports("ioproxy") || !out->set_ioproxy(&memory)) fail("OpenImageIO cannot encode a PNG in memory");
-    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-    // Our pixels are straight alpha: without this OIIO would un-premultiply them.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out->open(path.string(), spec)) fail(out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) {
-        const std::string why = out->geterror();
-        out->close();
-        fail(why);
-    }
-    if (!out->close()) fail(out->geterror());
-    out.reset();
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = png_uint_32(image.width);
+    png.height = png_uint_32(image.height);
+    png.format = PNG_FORMAT_RGBA;
+    png_alloc_size_t size = 0;
+    if (!png_image_write_get_memory_size(png, size, 0, image.pixels.data(), 0, nullptr)) fail(png.message);
+    std::vector<unsigned char> encoded(size);
+    if (!png_image_write_to_memory(&png, encoded.data(), &size, 0, image.pixels.data(), 0, nullptr))
+        fail(png.message);
+    encoded.resize(size);
     write_file_atomically(path, encoded);
 }
 
@@ -144,39 +138,23 @@ ImageRGBA8 read_png(const std::filesystem::path& path) {
                                  (std::filesystem::exists(path, error) ? ": not a regular file"
                                                                        : ": no such file"));
 
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);  // keep straight alpha as stored
-    auto in = OIIO::ImageInput::open(path.string(), &config);
-    if (!in) throw CaptureError("cannot read image " + quoted(path) + ": " + OIIO::geterror());
-
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide ||
-        spec.height > kMaxImageSide || spec.depth > 1)
-        throw CaptureError("cannot read image " + quoted(path) + ": size " +
-                                 std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                                 " outside 1.." + std::to_string(kMaxImageSide));
-    if (spec.nchannels < 1 || spec.deep)
-        throw CaptureError("cannot read image " + quoted(path) + ": " +
-                                 std::to_string(spec.nchannels) + " channels" +
-                                 (spec.deep ? " (deep image)" : ""));
-
-    const int channels = std::min(spec.nchannels, 4);
-    const std::size_t pixel_count = std::size_t(spec.width) * std::size_t(spec.height);
-    std::vector<std::uint8_t> stored(pixel_count * std::size_t(channels));
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, stored.data()))
-        throw CaptureError("cannot read image " + quoted(path) + ": " + in->geterror());
-    in->close();
-
-    ImageRGBA8 image{spec.width, spec.height, std::vector<std::uint8_t>(pixel_count * 4)};
-    for (std::size_t i = 0; i < pixel_count; ++i) {
-        const std::uint8_t* s = &stored[i * std::size_t(channels)];
-        std::uint8_t* d = &image.pixels[i * 4];
-        const bool grey = channels <= 2;
-        d[0] = s[0];
-        d[1] = grey ? s[0] : s[1];
-        d[2] = grey ? s[0] : s[2];
-        d[3] = channels == 2 ? s[1] : channels == 4 ? s[3] : 255;
+    // libpng's simplified reader turns grey, grey + alpha, RGB and palette images into
+    // RGBA8 (grey becomes R=G=B, missing alpha 255), alpha kept straight.
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&png, path.c_str()))
+        throw CaptureError("cannot read image " + quoted(path) + ": " + png.message);
+    if (png.width < 1 || png.height < 1 || png.width > png_uint_32(kMaxImageSide) ||
+        png.height > png_uint_32(kMaxImageSide)) {
+        png_image_free(&png);
+        throw CaptureError("cannot read image " + quoted(path) + ": size " + std::to_string(png.width) + "x" +
+                           std::to_string(png.height) + " outside 1.." + std::to_string(kMaxImageSide));
     }
+    png.format = PNG_FORMAT_RGBA;
+    ImageRGBA8 image{int(png.width), int(png.height), std::vector<std::uint8_t>(PNG_IMAGE_SIZE(png))};
+    // Frees `png` whether it succeeds or not.
+    if (!png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr))
+        throw CaptureError("cannot read image " + quoted(path) + ": " + png.message);
     return image;
 }
 

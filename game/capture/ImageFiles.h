@@ -17,7 +17,7 @@ inline constexpr int kMaxImageSide = 8192;
 // image whose pixel count does not match its size.
 void write_png(const std::filesystem::path& path, const ImageRGBA8& image);
 
-// Reads a PNG (or any image OpenImageIO reads) of 1-4 channels as RGBA8: grey
+// Reads a PNG (libpng) of 1-4 channels or a palette as RGBA8: grey
 // becomes R=G=B, missing alpha becomes 255. Throws std::runtime_error naming the file
 // if it is missing, unreadable or larger than kMaxImageSide per side.
 ImageRGBA8 read_png(const std::filesystem::path& path);

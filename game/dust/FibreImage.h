@@ -28,7 +28,7 @@ inline constexpr int kMaxFibreSlices = 16;
 // fibre pixels and background; throws FibreImageError naming `what` (the file) and
 // the first offending pixel otherwise.
 FibreImage binarised_fibres(const ImageRGBA8& image, int slices, const std::string& what);
-// Reads the file (any format OpenImageIO reads), then binarised_fibres.
+// Reads the file (a PNG, read_png), then binarised_fibres.
 FibreImage read_fibre_image(const std::filesystem::path& file, int slices);
 // The direction table; throws FibreImageError when no two fibre pixels touch.
 effects::FibreDirections fibre_directions(const FibreImage& image, const std::string& what);

@@ -1,6 +1,6 @@
 // The fibre-image analysis on any pixels: a direction table that sums to 1, or one
 // FibreImageError. The first bytes give the size and slice count, the rest are the
-// RGBA pixels, repeated to fill the image (decoding the file is OpenImageIO's part).
+// RGBA pixels, repeated to fill the image (decoding the file is libpng's part).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
