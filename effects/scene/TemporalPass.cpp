@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -21,11 +22,14 @@ float radical_inverse(uint64_t i, uint64_t base) {
     return result;
 }
 
-// The viewport less `hole` ({x0, y0, x1, y1}, x1/y1 exclusive; empty: none), as up to
-// four bands: below, above, then left and right of it.
-std::vector<glm::ivec4> rects_around(glm::ivec4 hole, int width, int height) {
-    if (hole.z <= hole.x || hole.w <= hole.y) return {{0, 0, width, height}};
-    return {{0, 0, width, hole.y}, {0, hole.w, width, height}, {0, hole.y, hole.x, hole.w}, {hole.z, hole.y, width, hole.w}};
+bool empty(glm::ivec4 rect) { return rect.z <= rect.x || rect.w <= rect.y; }
+
+// The viewport less `hole` ({x0, y0, x1, y1}, x1/y1 exclusive; empty: none), as four
+// bands (some empty): below, above, then left and right of it.
+std::array<glm::ivec4, 4> rects_around(glm::ivec4 hole, int width, int height) {
+    if (empty(hole)) return {glm::ivec4(0, 0, width, height), glm::ivec4(0), glm::ivec4(0), glm::ivec4(0)};
+    return {glm::ivec4(0, 0, width, hole.y), glm::ivec4(0, hole.w, width, height), glm::ivec4(0, hole.y, hole.x, hole.w),
+            glm::ivec4(hole.z, hole.y, width, hole.w)};
 }
 
 }  // namespace
@@ -82,7 +86,7 @@ void TemporalPass::render(const FrameContext& frame) {
 
     t.history_fbo().bind();
     glViewport(0, 0, t.width(), t.height());
-    gl::PipelineScope state(gl::kFullScreen);
+    gl::PipelineScope state({.scissor = true});
     const bool from_hdr = tonemapped_by_temporal(frame.resources.quality);
     const gl::Texture& current = from_hdr ? t.colour() : frame.resources.quality.antialias ? t.antialiased() : t.display();
     current.bind(0);
@@ -104,15 +108,15 @@ void TemporalPass::render(const FrameContext& frame) {
         if (with_vehicle)
             program.set("u_reproject_vehicle", last_view_proj_ * last_vehicle * glm::inverse(vehicle) * camera.inv_view_proj);
         program.set("u_current_weight", history ? current_weight_ : 1.0f);
-        for (const glm::ivec4& r : with_vehicle ? std::vector<glm::ivec4>{vehicle_rect}
-                                                : rects_around(vehicle_rect, t.width(), t.height())) {
-            if (r.z <= r.x || r.w <= r.y) continue;
-            glEnable(GL_SCISSOR_TEST);
+        auto draw_in = [](glm::ivec4 r) {
+            if (empty(r)) return;
             glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
             glDrawArrays(GL_TRIANGLES, 0, 3);
-        }
+        };
+        if (with_vehicle) draw_in(vehicle_rect);
+        else
+            for (const glm::ivec4& r : rects_around(vehicle_rect, t.width(), t.height())) draw_in(r);
     }
-    glDisable(GL_SCISSOR_TEST);
 
     last_view_proj_ = unjittered;
     last_vehicle_ = vehicle;

@@ -44,12 +44,13 @@ void main() {
     forward *= forward;
     forward *= forward;  // toward^8
     vec3 sky = textureLod(u_env, vec3(0, 1, 0), u_env_max_lod).rgb;
-    vec3 sun = u_sun_radiance * sun_visibility(p, vec3(0)) * (0.03 + 0.5 * forward);
+    float sunlit = sun_visibility(p, vec3(0));  // once: the glow and the highlight share it
+    vec3 sun = u_sun_radiance * sunlit * (0.03 + 0.5 * forward);
     v_colour = apply_fog(0.85 * sky * vec3(0.88, 0.95, 0.97) + sun, p, u_eye);
     vec3 h = normalize(u_sun_dir - d);
     v_glint_at = vec2(dot(h, u_cam_right), dot(h, u_cam_up));
     float fresnel = 0.02 + 0.98 * pow(1.0 - clamp(dot(h, -d), 0.0, 1.0), 5.0);
-    v_glint = u_sun_radiance * sun_visibility(p, vec3(0)) * (0.6 + 3.0 * fresnel) * min(coverage, 1.0) *
+    v_glint = u_sun_radiance * sunlit * (0.6 + 3.0 * fresnel) * min(coverage, 1.0) *
               exp(-dist * 0.0012) * smoothstep(0.6, 1.6, dist);  // through the fog (apply_fog)
 
     v_corner = corner;
