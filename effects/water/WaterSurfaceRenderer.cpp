@@ -5,14 +5,11 @@
 #include <cstddef>
 
 #include "effects/gl/DrawCount.h"
-#include "effects/gl/EmptyVertexArray.h"
-#include "effects/gl/PipelineState.h"
 
 namespace effects {
 
 WaterSurfaceRenderer::WaterSurfaceRenderer()
-    : program_(gl::Program::from_files("water.surface", {"water/surface.vert.glsl", "water/surface.frag.glsl"})),
-      slope_program_(gl::Program::from_files("water.slopes", {"common/fullscreen.vert.glsl", "water/slopes.frag.glsl"})) {}
+    : program_(gl::Program::from_files("water.surface", {"water/surface.vert.glsl", "water/surface.frag.glsl"})) {}
 
 void WaterSurfaceRenderer::rebuild(const WaterView& view, const Shape& shape) {
     mesh_ = make_water_surface_mesh(view.grid ? &*view.grid : nullptr, kMaxLatticeCells, kTileCells, kHorizonExtent_m);
@@ -25,21 +22,14 @@ void WaterSurfaceRenderer::rebuild(const WaterView& view, const Shape& shape) {
     vao_.vertex_buffer(0, vertices_, 0, sizeof(SurfaceVertex));
     vao_.element_buffer(indices_);
 
-    // Without a grid the shaders still sample (zero) heights and slopes: 1x1 textures.
+    // Without a grid the shaders still sample a (zero) grid: a 1x1 texture.
     const int side = shape.has_grid ? shape.size : 1;
-    heights_ = gl::Texture::create_2d("water.heights", GL_R32F, side, side);
-    heights_.set_filter(GL_LINEAR, GL_LINEAR);
-    heights_.set_wrap(GL_CLAMP_TO_EDGE);
-    slopes_ = gl::Texture::create_2d("water.slopes", GL_RGBA16F, side, side, gl::Texture::full_mip_levels(side, side));
-    slopes_.set_filter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
-    slopes_.set_wrap(GL_CLAMP_TO_EDGE);
-    slope_fbo_ = gl::Framebuffer::create("water.slopes");
-    slope_fbo_.attach_colour(0, slopes_);
-    slope_fbo_.check_complete();
+    grid_texture_ = gl::Texture::create_2d("water.grid", GL_RGBA32F, side, side, gl::Texture::full_mip_levels(side, side));
+    grid_texture_.set_filter(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    grid_texture_.set_wrap(GL_CLAMP_TO_EDGE);
     if (!shape.has_grid) {
         const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-        heights_.upload<float>(GL_RED, GL_FLOAT, std::span<const float>(zero, 1));
-        slopes_.upload<float>(GL_RGBA, GL_FLOAT, std::span<const float>(zero, 4));
+        grid_texture_.upload<float>(GL_RGBA, GL_FLOAT, std::span<const float>(zero, 4));
     }
     shape_ = shape;
 }
@@ -56,17 +46,9 @@ void WaterSurfaceRenderer::update(const WaterView& view) {
                 min_height_ = std::min(min_height_, h);
                 max_height_ = std::max(max_height_, h);
             }
-        heights_.upload<float>(GL_RED, GL_FLOAT, view.grid->heights);
-        glBindFramebuffer(GL_FRAMEBUFFER, slope_fbo_.id());
-        glViewport(0, 0, shape.size, shape.size);
-        gl::apply(gl::kFullScreen);
-        slope_program_.use();
-        slope_program_.set("u_heights", int(kHeightsUnit));
-        slope_program_.set("u_spacing", shape.spacing_m);
-        heights_.bind(kHeightsUnit);
-        gl::bind_empty_vertex_array();
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        slopes_.generate_mipmaps();
+        grid_mips_.derive(*view.grid);
+        for (int level = 0; level < grid_mips_.levels(); ++level)
+            grid_texture_.upload<glm::vec4>(GL_RGBA, GL_FLOAT, grid_mips_.level(level), level);
     }
 
     const gl::Program& p = program_;
@@ -83,13 +65,11 @@ void WaterSurfaceRenderer::set_grid(const gl::Program& p) const {
     p.set("u_grid_size", shape.has_grid ? shape.size : 1);
     p.set("u_grid_spacing", shape.has_grid ? shape.spacing_m : 1.0f);
     p.set("u_grid_origin", shape.origin_xz);
-    p.set("u_heights", int(kHeightsUnit));
-    p.set("u_slopes", int(kSlopesUnit));
+    p.set("u_wave_grid", int(kGridUnit));
 }
 
 void WaterSurfaceRenderer::bind_grid_textures() const {
-    heights_.bind(kHeightsUnit);
-    slopes_.bind(kSlopesUnit);
+    grid_texture_.bind(kGridUnit);
 }
 
 void WaterSurfaceRenderer::bounds(glm::vec3& lo, glm::vec3& hi) const {

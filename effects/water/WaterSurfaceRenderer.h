@@ -1,19 +1,19 @@
 #pragma once
 // Draws the sea surface's geometry step (WaterShading): the wave grid's lattice tiles
 // (strides from SurfaceLod), displaced by the grid's heights, and the flat frame
-// around them (shaders/water/surface.*.glsl), depth only. Each frame the heights go
-// into an R32F texture and a small pass turns them into slopes and curvature (RGBA16F,
-// mipmapped) so that the sea's shading reads one texel instead of five.
+// around them (shaders/water/surface.*.glsl), depth only. Each frame the grid's heights,
+// slopes and curvature (WaveGridMips) go into one mipmapped RGBA32F texture, which the
+// vertices and the sea's shading read.
 #include <optional>
 #include <vector>
 
 #include "effects/gl/Buffer.h"
-#include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
 #include "effects/gl/VertexArray.h"
 #include "effects/scene/Camera.h"
 #include "effects/water/SurfaceLod.h"
+#include "effects/water/WaveGridMips.h"
 #include "effects/water/WaterSurfaceMesh.h"
 #include "effects/water/WaterView.h"
 
@@ -24,19 +24,18 @@ public:
     static constexpr int kMaxLatticeCells = 256;
     static constexpr int kTileCells = 32;
     static constexpr float kHorizonExtent_m = 3000.0f;  // the flat frame's reach
-    static constexpr GLuint kHeightsUnit = 2;
-    static constexpr GLuint kSlopesUnit = 3;
+    static constexpr GLuint kGridUnit = 2;
 
     WaterSurfaceRenderer();
 
-    // Uploads the grid's heights and derives the slopes (binds its own framebuffer:
-    // call before binding the scene's). Rebuilds the mesh when the grid's shape changed.
+    // Derives the grid's texels and uploads them. Rebuilds the mesh when the grid's
+    // shape changed.
     void update(const WaterView& view);
     // Draws into the bound framebuffer with the program's shared uniforms already set.
     void draw(const Camera& camera, int viewport_height, float target_cell_px);
     // For another program that reads the grid (the sea's shading): sets its u_has_grid,
-    // u_grid_{size,spacing,origin}, u_heights and u_slopes as of the last update(), and
-    // binds those textures to their units.
+    // u_grid_{size,spacing,origin} and u_wave_grid as of the last update(), and binds
+    // that texture to its unit.
     void set_grid(const gl::Program& program) const;
     void bind_grid_textures() const;
 
@@ -56,9 +55,9 @@ private:
     };
     void rebuild(const WaterView& view, const Shape& shape);
 
-    gl::Program program_, slope_program_;
-    gl::Texture heights_, slopes_;
-    gl::Framebuffer slope_fbo_;
+    gl::Program program_;
+    WaveGridMips grid_mips_;
+    gl::Texture grid_texture_;
     gl::Buffer vertices_, indices_;
     gl::VertexArray vao_;
     WaterSurfaceMesh mesh_;  // indices dropped after upload; ranges and layout kept

@@ -13,7 +13,7 @@ uniform float u_shore_foam;
 uniform float u_ripples;
 uniform float u_pixel_m;    // a pixel's size one metre from the eye
 uniform int u_has_grid;
-uniform sampler2D u_slopes;  // dh/dx, dh/dz, Laplacian per grid cell, mipmapped
+uniform sampler2D u_wave_grid;  // dh/dx, dh/dz, Laplacian, height per grid cell, mipmapped
 uniform vec2 u_grid_origin;
 uniform float u_grid_spacing;
 uniform int u_grid_size;
@@ -38,7 +38,7 @@ vec2 grid_slope(vec2 xz, float lod, out float crest, out float stirred) {
     vec2 cell = (xz - u_grid_origin) / u_grid_spacing;
     float inside = min(min(cell.x, cell.y), min(n - 1.0 - cell.x, n - 1.0 - cell.y));
     if (inside <= 0.0) return vec2(0.0);
-    vec3 s = textureLod(u_slopes, (cell + 0.5) / n, lod).xyz;
+    vec3 s = textureLod(u_wave_grid, (cell + 0.5) / n, lod).xyz;
     vec2 slope = s.xy * min(inside, 1.0);
     float steep = length(slope);
     float curved = abs(s.z) * min(inside, 1.0);

@@ -6,7 +6,7 @@
 layout(location = 0) in vec4 a_vertex;  // lattice coords (tile-local), or world xz if z = 1
 uniform mat4 u_view_proj;
 uniform float u_sea_level;
-uniform sampler2D u_heights;  // R32F, texel (i, j) = height of cell (i, j)
+uniform sampler2D u_wave_grid;  // texel (i, j): slopes, Laplacian and height (w) of cell (i, j)
 uniform vec2 u_grid_origin;
 uniform float u_grid_spacing;
 uniform int u_grid_size;
@@ -35,7 +35,7 @@ void main() {
         // The lattice's border stays at rest, where the frame meets it.
         if (all(greaterThan(g, ivec2(0))) && all(lessThan(g, ivec2(u_lattice_cells)))) {
             vec2 cell = (xz - u_grid_origin) / u_grid_spacing;
-            h = textureLod(u_heights, (cell + 0.5) / float(u_grid_size), 0.0).r;
+            h = textureLod(u_wave_grid, (cell + 0.5) / float(u_grid_size), 0.0).w;
         }
     }
     gl_Position = u_view_proj * vec4(xz.x, u_sea_level + h, xz.y, 1.0);
