@@ -59,6 +59,8 @@ FrameContext Renderer::prepare(const sim::World& world, RenderOutput output, con
         const glm::vec2 px = temporal_jitter_px(temporal_frame_++);
         camera_ = jittered(camera_, 2.0f * px / glm::vec2(targets_.width(), targets_.height()));
     }
+    // The ground's detail for this frame's eye and scene pixels, for every pass to draw.
+    resources_.geometry.plan_terrain(camera_.eye, 0.5f * camera_.proj[1][1] * float(targets_.height()));
     gather_frame_data(world,
                       {.camera = camera_,
                        .sun_dir = sun_dir_,

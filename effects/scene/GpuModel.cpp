@@ -31,12 +31,17 @@ GpuModel::GpuModel(const Model& model) : name_(model.name) {
     }
     vertices_ = gl::Buffer::create<MeshVertex>("model." + model.name + ".vertices", verts, 0);
     indices_ = gl::Buffer::create<uint32_t>("model." + model.name + ".indices", idx, 0);
-    vao_ = gl::VertexArray::create("model." + model.name);
-    vao_.attribute(0, 0, 3, GL_FLOAT, offsetof(MeshVertex, position));
-    vao_.attribute(1, 0, 3, GL_FLOAT, offsetof(MeshVertex, normal));
-    vao_.attribute(2, 0, 4, GL_FLOAT, offsetof(MeshVertex, color));
-    vao_.vertex_buffer(0, vertices_, 0, sizeof(MeshVertex));
-    vao_.element_buffer(indices_);
+    vao_ = mesh_vertex_array("model." + model.name, vertices_, indices_);
+}
+
+gl::VertexArray mesh_vertex_array(std::string_view label, const gl::Buffer& vertices, const gl::Buffer& indices) {
+    gl::VertexArray vao = gl::VertexArray::create(label);
+    vao.attribute(0, 0, 3, GL_FLOAT, offsetof(MeshVertex, position));
+    vao.attribute(1, 0, 3, GL_FLOAT, offsetof(MeshVertex, normal));
+    vao.attribute(2, 0, 4, GL_FLOAT, offsetof(MeshVertex, color));
+    vao.vertex_buffer(0, vertices, 0, sizeof(MeshVertex));
+    vao.element_buffer(indices);
+    return vao;
 }
 
 void GpuModel::draw(const gl::Program& program, bool depth_only) const {

@@ -75,6 +75,10 @@ struct PartBox {
 // them being in front of them; equals in the model's order.
 std::vector<size_t> nearest_first(const std::vector<PartBox>& boxes, glm::vec3 eye);
 
+// A vertex array reading MeshVertex attributes (0 position, 1 normal, 2 colour) from
+// `vertices` and triangles from `indices`, as the scene's mesh shaders take them.
+gl::VertexArray mesh_vertex_array(std::string_view label, const gl::Buffer& vertices, const gl::Buffer& indices);
+
 // A unit sphere (radius 1) for thrown objects.
 Model make_sphere_model(int rings, int segments);
 // The cube [-1, 1]^3 with a flat normal per face.

@@ -43,7 +43,7 @@ std::pair<glm::vec3, glm::vec3> world_box(const Model& m, const glm::mat4& trans
 SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
     : desc_(desc),
       level_(terrain.level()),
-      terrain_(make_terrain_model(terrain, 2.0f)),
+      terrain_(make_terrain_mesh(terrain, 2.0f)),
       sea_(make_sea_model(terrain.level().sea_level_m, 3000.0f)),
       sphere_(make_sphere_model(12, 20)),
       box_(make_box_model()),
@@ -103,7 +103,15 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     // the shadow map, it saves the raster of most of the map and cannot self-shadow.
     ground.use();
     place(ground, glm::mat4(1.0f), depth_only);
-    terrain_.draw_visible(ground, depth_only, view, glm::mat4(1.0f), depth_only, select);
+    terrain_.draw(ground, depth_only, view, depth_only, select);
+}
+
+bool SceneGeometry::plan_terrain(glm::vec3 eye, float pixels_per_radian) {
+    // Half a scene pixel: where the frame is enlarged (the auto scale's floor is about a
+    // third of the output), a pixel's error would be a step of three.
+    if (!terrain_.plan(eye, pixels_per_radian, 0.5f)) return false;
+    ++terrain_generation_;
+    return true;
 }
 
 void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, bool depth_only,

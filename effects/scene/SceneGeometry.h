@@ -11,6 +11,7 @@
 #include "effects/scene/FramePoses.h"
 #include "effects/scene/Frustum.h"
 #include "effects/scene/GpuModel.h"
+#include "effects/scene/GpuTerrain.h"
 #include "effects/scene/SceneDesc.h"
 #include "effects/scene/StaticBatches.h"
 #include "sim/world/World.h"
@@ -58,6 +59,13 @@ public:
     void apply_ground(const gl::Program& program) const;
     int ground_road_count() const;
     const GpuModel& sea() const { return sea_; }
+    // The ground's level of detail per tile for the next frame (GpuTerrain::plan), once
+    // a frame before its passes, from the frame's eye and its scene's pixels per radian
+    // (viewport height / (2 tan(fov_y / 2))); every draw of the frame follows it. Returns
+    // whether it changed (a cached shadow of the ground is then stale).
+    bool plan_terrain(glm::vec3 eye, float pixels_per_radian);
+    // Counts the plans that changed a tile's level: what a cache of the ground keys on.
+    uint64_t terrain_generation() const { return terrain_generation_; }
 
 private:
     // The car, the boat and the thrown objects.
@@ -71,7 +79,9 @@ private:
     const SceneDesc& desc_;
     const sim::LevelDesc& level_;
     std::vector<std::unique_ptr<GpuModel>> models_;
-    GpuModel terrain_, sea_, sphere_;
+    GpuTerrain terrain_;
+    uint64_t terrain_generation_ = 0;
+    GpuModel sea_, sphere_;
     // The markers' shapes, plain and giving off light: the next gate amber, a hit buoy green.
     GpuModel box_, next_box_, hit_sphere_;
     glm::vec3 props_min_{0.0f}, props_max_{0.0f};

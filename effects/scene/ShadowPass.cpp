@@ -39,13 +39,15 @@ void ShadowPass::render(const FrameContext& frame) {
     gl::PipelineScope state({.depth_test = true, .depth_write = true});
     program_.set("u_view_proj", view_proj);
     const Frustum sun_view(view_proj);
-    // What stays put (props, relief) is drawn once per view of the sun; each frame starts
-    // from a copy of it and adds what moves.
-    if (still_view_proj_ != view_proj) {
+    // What stays put (props, relief) is drawn once per view of the sun (and plan of the
+    // ground's detail); each frame starts from a copy of it and adds what moves.
+    const uint64_t terrain = frame.resources.geometry.terrain_generation();
+    if (still_view_proj_ != view_proj || still_terrain_ != terrain) {
         glBindFramebuffer(GL_FRAMEBUFFER, still_fbo_.id());
         glClear(GL_DEPTH_BUFFER_BIT);
         frame.resources.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::StillShadowCasters, sun_view);
         still_view_proj_ = view_proj;
+        still_terrain_ = terrain;
     }
     glCopyImageSubData(still_map_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, lighting.shadow_map.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        size, size, 1);

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <optional>
 
 #include <glm/mat4x4.hpp>
@@ -23,6 +24,7 @@ private:
     gl::Texture still_map_;  // the casters that stay put, for the current view of the sun
     gl::Framebuffer still_fbo_;
     std::optional<glm::mat4> still_view_proj_;
+    uint64_t still_terrain_ = 0;  // SceneGeometry::terrain_generation() of the still map
     bool fbo_initialised_ = false;
 };
 

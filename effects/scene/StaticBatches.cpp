@@ -12,6 +12,7 @@
 #include <glm/matrix.hpp>
 
 #include "effects/gl/DrawCount.h"
+#include "effects/scene/GpuModel.h"
 
 namespace effects {
 
@@ -77,12 +78,7 @@ StaticBatches::StaticBatches(const SceneDesc& desc, float cell_m) {
     if (batches_.empty()) return;
     vertices_ = gl::Buffer::create<MeshVertex>("props.batched.vertices", vertices, 0);
     indices_ = gl::Buffer::create<uint32_t>("props.batched.indices", indices, 0);
-    vao_ = gl::VertexArray::create("props.batched");
-    vao_.attribute(0, 0, 3, GL_FLOAT, offsetof(MeshVertex, position));
-    vao_.attribute(1, 0, 3, GL_FLOAT, offsetof(MeshVertex, normal));
-    vao_.attribute(2, 0, 4, GL_FLOAT, offsetof(MeshVertex, color));
-    vao_.vertex_buffer(0, vertices_, 0, sizeof(MeshVertex));
-    vao_.element_buffer(indices_);
+    vao_ = mesh_vertex_array("props.batched", vertices_, indices_);
 }
 
 void StaticBatches::draw(const gl::Program& p, bool depth_only, const Frustum& view,

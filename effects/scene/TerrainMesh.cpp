@@ -2,12 +2,88 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 namespace effects {
 
-Model make_terrain_model(const sim::Terrain& terrain, float spacing_m) {
+namespace {
+
+constexpr size_t kTileCells = 16;
+
+// A tile's triangles with cells of `stride` grid cells a side, over its w x h vertices
+// (row-major, local indices). Cells on the tile's border are fans from their centre
+// vertex around every border vertex on their edge; the others are two triangles.
+// Winding as the finest level: (i, j), (i, j + 1), (i + 1, j).
+std::vector<uint32_t> tile_triangles(size_t w, size_t h, size_t stride) {
+    auto at = [w](size_t i, size_t j) { return uint32_t(j * w + i); };
+    std::vector<uint32_t> out;
+    const size_t last_i = w - 1, last_j = h - 1;
+    for (size_t b = 0; b < last_j; b += stride)
+        for (size_t a = 0; a < last_i; a += stride) {
+            const size_t a1 = a + stride, b1 = b + stride;
+            const bool border = stride > 1 && (a == 0 || b == 0 || a1 == last_i || b1 == last_j);
+            if (!border) {
+                out.insert(out.end(), {at(a, b), at(a, b1), at(a1, b), at(a1, b), at(a, b1), at(a1, b1)});
+                continue;
+            }
+            // The cell's outline counter-clockwise in (i, j), fine along the tile's border.
+            std::vector<uint32_t> ring;
+            const size_t fine_b = b == 0 ? 1 : stride, fine_r = a1 == last_i ? 1 : stride;
+            const size_t fine_t = b1 == last_j ? 1 : stride, fine_l = a == 0 ? 1 : stride;
+            for (size_t i = a; i < a1; i += fine_b) ring.push_back(at(i, b));
+            for (size_t j = b; j < b1; j += fine_r) ring.push_back(at(a1, j));
+            for (size_t i = a1; i > a; i -= fine_t) ring.push_back(at(i, b1));
+            for (size_t j = b1; j > b; j -= fine_l) ring.push_back(at(a, j));
+            const uint32_t centre = at(a + stride / 2, b + stride / 2);
+            for (size_t k = 0; k < ring.size(); ++k) out.insert(out.end(), {centre, ring[(k + 1) % ring.size()], ring[k]});
+        }
+    return out;
+}
+
+// How far the surface of `coarse` (local indices over `v`) strays vertically from the
+// tile's vertices: each vertex against the coarse triangles over it. Infinite where the
+// normal shaded there would stray from the vertex's own by more than about a degree: the
+// ground is shaded from its interpolated normals, and a coarse triangle spread over a
+// slope's edge (the quay's drop) would shade flat ground as slope.
+float vertical_error(const std::vector<MeshVertex>& v, const std::vector<uint32_t>& coarse) {
+    constexpr float kNormalTolerance = 0.02f;  // |n - n'| of unit normals, radians nearly
+    float worst = 0.0f;
+    for (size_t t = 0; t + 2 < coarse.size(); t += 3) {
+        const MeshVertex &v0 = v[coarse[t]], &v1 = v[coarse[t + 1]], &v2 = v[coarse[t + 2]];
+        const glm::vec3 p0 = v0.position, p1 = v1.position, p2 = v2.position;
+        const glm::vec2 lo = glm::min(glm::vec2(p0.x, p0.z), glm::min(glm::vec2(p1.x, p1.z), glm::vec2(p2.x, p2.z)));
+        const glm::vec2 hi = glm::max(glm::vec2(p0.x, p0.z), glm::max(glm::vec2(p1.x, p1.z), glm::vec2(p2.x, p2.z)));
+        const float det = (p1.x - p0.x) * (p2.z - p0.z) - (p2.x - p0.x) * (p1.z - p0.z);
+        if (std::fabs(det) < 1e-9f) continue;
+        for (const MeshVertex& q : v) {
+            const glm::vec3 p = q.position;
+            if (p.x < lo.x || p.x > hi.x || p.z < lo.y || p.z > hi.y) continue;
+            const float u = ((p.x - p0.x) * (p2.z - p0.z) - (p2.x - p0.x) * (p.z - p0.z)) / det;
+            const float w = ((p1.x - p0.x) * (p.z - p0.z) - (p.x - p0.x) * (p1.z - p0.z)) / det;
+            if (u < -1e-4f || w < -1e-4f || u + w > 1.0f + 1e-4f) continue;
+            const float y = p0.y + u * (p1.y - p0.y) + w * (p2.y - p0.y);
+            const glm::vec3 n = glm::normalize(v0.normal + u * (v1.normal - v0.normal) + w * (v2.normal - v0.normal));
+            if (glm::length(n - q.normal) > kNormalTolerance) return std::numeric_limits<float>::infinity();
+            worst = std::max(worst, std::fabs(y - p.y));
+        }
+    }
+    return worst;
+}
+
+}  // namespace
+
+int TerrainMesh::Tile::level_for(glm::vec3 eye, float pixels_per_radian, float max_error_px) const {
+    const float distance = std::max(glm::distance(eye, glm::clamp(eye, lo, hi)), 1e-3f);
+    const float max_error_m = max_error_px * distance / pixels_per_radian;
+    int l = 0;
+    while (l + 1 < levels && error_m[size_t(l + 1)] <= max_error_m) ++l;
+    return l;
+}
+
+TerrainMesh make_terrain_mesh(const sim::Terrain& terrain, float spacing_m) {
     const sim::LevelDesc& level = terrain.level();
     const float h = level.half_extent_m;
     std::vector<float> xs, zs;
@@ -18,9 +94,6 @@ Model make_terrain_model(const sim::Terrain& terrain, float spacing_m) {
     std::sort(zs.begin(), zs.end());
     zs.erase(std::unique(zs.begin(), zs.end(), [](float a, float b) { return std::fabs(a - b) < 0.05f; }), zs.end());
 
-    // Tiles of kTileCells x kTileCells cells, each its own mesh with its own bounds, so
-    // the passes skip what their view cannot see. Edge vertices are repeated, bit for bit.
-    constexpr size_t kTileCells = 16;
     const size_t nx = xs.size(), nz = zs.size();
     auto vertex = [&](float x, float z) {
         float e = 0.25f;
@@ -29,51 +102,45 @@ Model make_terrain_model(const sim::Terrain& terrain, float spacing_m) {
         glm::vec3 n = glm::normalize(glm::vec3(-dx / (2 * e), 1.0f, -dz / (2 * e)));
         return MeshVertex{{x, terrain.ground_height({x, z}), z}, n, glm::vec4(1.0f)};
     };
-    std::vector<MeshData> tiles;
+    TerrainMesh mesh;
+    // Per level, per tile: the triangles (global indices), laid out level-major below.
+    std::array<std::vector<std::vector<uint32_t>>, TerrainMesh::kLevels> levels;
+    // Edge vertices are repeated, bit for bit, in each tile that has them.
     for (size_t j0 = 0; j0 + 1 < nz; j0 += kTileCells)
         for (size_t i0 = 0; i0 + 1 < nx; i0 += kTileCells) {
             const size_t j1 = std::min(j0 + kTileCells, nz - 1), i1 = std::min(i0 + kTileCells, nx - 1);
-            const size_t w = i1 - i0 + 1;
-            MeshData m;
-            m.name = "terrain";
-            m.roughness = 0.9f;
+            const size_t w = i1 - i0 + 1, rows = j1 - j0 + 1;
+            std::vector<MeshVertex> local;
             for (size_t j = j0; j <= j1; ++j)
-                for (size_t i = i0; i <= i1; ++i) m.vertices.push_back(vertex(xs[i], zs[j]));
-            const bool flat = std::all_of(m.vertices.begin(), m.vertices.end(), [&](const MeshVertex& v) {
-                return v.position.y == m.vertices.front().position.y && v.normal == glm::vec3(0.0f, 1.0f, 0.0f);
-            });
-            if (flat) {
-                // Level ground: a fan from the centre to the border's vertices, the same as
-                // the grid's pixel for pixel but an eighth of its triangles (every one is
-                // set up on the CPU). The border keeps every vertex: no T-junctions.
-                const size_t h = j1 - j0 + 1;
-                std::vector<uint32_t> ring;
-                for (size_t i = 0; i + 1 < w; ++i) ring.push_back(uint32_t(i));
-                for (size_t j = 0; j + 1 < h; ++j) ring.push_back(uint32_t(j * w + w - 1));
-                for (size_t i = w - 1; i > 0; --i) ring.push_back(uint32_t((h - 1) * w + i));
-                for (size_t j = h - 1; j > 0; --j) ring.push_back(uint32_t(j * w));
-                MeshVertex centre = m.vertices.front();
-                centre.position.x = 0.5f * (xs[i0] + xs[i1]);
-                centre.position.z = 0.5f * (zs[j0] + zs[j1]);
-                const uint32_t c = uint32_t(m.vertices.size());
-                m.vertices.push_back(centre);
-                for (size_t k = 0; k < ring.size(); ++k)
-                    m.indices.insert(m.indices.end(), {c, ring[(k + 1) % ring.size()], ring[k]});
-            } else {
-                for (size_t j = 0; j + 1 < j1 - j0 + 1; ++j)
-                    for (size_t i = 0; i + 1 < w; ++i) {
-                        uint32_t a = uint32_t(j * w + i), b = a + 1, c = uint32_t(a + w), d = c + 1;
-                        m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
-                    }
+                for (size_t i = i0; i <= i1; ++i) local.push_back(vertex(xs[i], zs[j]));
+            TerrainMesh::Tile tile;
+            tile.lo = tile.hi = local.front().position;
+            for (const MeshVertex& v : local) {
+                tile.lo = glm::min(tile.lo, v.position);
+                tile.hi = glm::max(tile.hi, v.position);
             }
-            tiles.push_back(std::move(m));
+            const uint32_t base = uint32_t(mesh.vertices.size());
+            for (int l = 0; l < TerrainMesh::kLevels; ++l) {
+                const size_t stride = size_t(1) << l;
+                std::vector<uint32_t> tris;
+                if ((w - 1) % stride == 0 && (rows - 1) % stride == 0) {
+                    tris = tile_triangles(w, rows, stride);
+                    tile.error_m[size_t(l)] = l == 0 ? 0.0f : vertical_error(local, tris);
+                    tile.levels = l + 1;
+                }
+                for (uint32_t& i : tris) i += base;
+                levels[size_t(l)].push_back(std::move(tris));
+            }
+            mesh.vertices.insert(mesh.vertices.end(), local.begin(), local.end());
+            mesh.tiles.push_back(tile);
         }
-    Model model;
-    model.name = "terrain";
-    model.bounds_min = {-h, level.seabed_m, -h};
-    model.bounds_max = {h, level.land_height_m + 20.0f, h};
-    model.meshes = std::move(tiles);
-    return model;
+    for (int l = 0; l < TerrainMesh::kLevels; ++l)
+        for (size_t t = 0; t < mesh.tiles.size(); ++t) {
+            const std::vector<uint32_t>& tris = levels[size_t(l)][t];
+            mesh.tiles[t].level[size_t(l)] = {uint32_t(mesh.indices.size()), uint32_t(tris.size())};
+            mesh.indices.insert(mesh.indices.end(), tris.begin(), tris.end());
+        }
+    return mesh;
 }
 
 Model make_sea_model(float sea_level_m, float half_extent_m) {
