@@ -181,3 +181,44 @@ TEST_F(ShadowRenderTest, TheCarsShadowStartsAtTheCarAndNothingElseIsDark) {
     EXPECT_LE(core_lit, core / 100) << "of " << core << " road pixels behind the car's body";
     EXPECT_EQ(clear_dark, 0) << "of " << clear << " road pixels with nothing between them and the sun";
 }
+
+// The shadow map starts each frame from the still casters' map and restores only where
+// the last frame's moving casters drew: after the car has driven on, the map is the very
+// one a fresh renderer (a whole copy) draws for the same world.
+TEST_F(ShadowRenderTest, AfterTheCarMovesTheMapIsTheOneAFreshRendererDraws) {
+    auto drive_on = [](sim::World& world, int ticks) {
+        for (int t = 0; t < ticks; ++t) {
+            sim::TickInput in;
+            in.set(sim::Control::Throttle, true);
+            in.set(sim::Control::SteerLeft, t > 40);
+            world.step(in);
+        }
+    };
+    auto shadow_map = [](RenderStage& stage) {
+        const effects::gl::Texture& map = stage.lighting().shadow_map;
+        std::vector<float> depth(size_t(map.width()) * size_t(map.height()));
+        glGetTextureImage(map.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
+        return depth;
+    };
+    sim::CameraView view;  // held still, so the sun's view (and the still map) stays put
+    RenderStage moved("harbour", {.width = W, .height = H, .passes = kLitScene});
+    const glm::vec3 start = effects::capture_poses(moved.world()).car.position;
+    view.eye = start + glm::vec3(0.0f, 30.0f, 20.0f);
+    view.target = start;
+    moved.render(view);
+    const std::vector<float> before = shadow_map(moved);
+    drive_on(moved.world(), 150);
+    ASSERT_GT(glm::distance(effects::capture_poses(moved.world()).car.position, start), 5.0f);
+    moved.render(view);
+    const std::vector<float> after = shadow_map(moved);
+
+    RenderStage fresh("harbour", {.width = W, .height = H, .passes = kLitScene});
+    drive_on(fresh.world(), 150);
+    fresh.render(view);
+    const std::vector<float> expected = shadow_map(fresh);
+    ASSERT_EQ(after.size(), expected.size());
+    EXPECT_NE(before, after) << "the car's shadow moved";
+    size_t differ = 0;
+    for (size_t i = 0; i < after.size(); ++i) differ += after[i] != expected[i];
+    EXPECT_EQ(differ, 0u) << "of " << after.size() << " texels";
+}

@@ -114,6 +114,19 @@ bool SceneGeometry::plan_terrain(glm::vec3 eye, float pixels_per_radian) {
     return true;
 }
 
+std::vector<std::pair<glm::vec3, glm::vec3>> SceneGeometry::moving_caster_boxes(const FramePoses& poses) const {
+    std::vector<std::pair<glm::vec3, glm::vec3>> boxes;
+    constexpr float kTurningParts_m = 0.5f;  // wheels steered and spun past the model's bounds at rest
+    for (const auto& [model, pose] : {std::pair{desc_.car_model, poses.car}, std::pair{desc_.boat_model, poses.boat}})
+        if (model >= 0) {
+            const auto [lo, hi] = world_box(desc_.models[size_t(model)], pose.matrix());
+            boxes.emplace_back(lo - kTurningParts_m, hi + kTurningParts_m);
+        }
+    for (const FramePoses::Object& o : poses.objects) boxes.emplace_back(o.position - o.radius_m, o.position + o.radius_m);
+    for (const ObjectiveMarker& m : poses.markers) boxes.emplace_back(m.lo, m.hi);
+    return boxes;
+}
+
 void SceneGeometry::draw_moving(const gl::Program& p, const FramePoses& poses, bool depth_only,
                                 const Frustum& view, const Select& select, Car car,
                                 const std::optional<glm::vec3>& eye) const {

@@ -45,6 +45,9 @@ public:
     void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
               const Frustum& view, const Select& select = {}, Car car = Car::Drawn,
               const std::optional<glm::vec3>& eye = std::nullopt) const;
+    // World boxes holding everything a MovingShadowCasters draw can draw for `poses`
+    // (the car and the boat with room for their turning wheels, thrown objects, markers).
+    std::vector<std::pair<glm::vec3, glm::vec3>> moving_caster_boxes(const FramePoses& poses) const;
     // The car's or the boat's model whole at `pose` (its moving parts at rest): the
     // ghost (GhostPass). Sets u_model and u_normal_matrix.
     void draw_vehicle(const gl::Program& program, sim::Vehicle vehicle, const sim::Pose& pose) const;

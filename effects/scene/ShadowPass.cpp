@@ -1,6 +1,7 @@
 #include "effects/scene/ShadowPass.h"
 
 #include "effects/gl/PipelineState.h"
+#include "effects/scene/ScreenRect.h"
 
 namespace effects {
 
@@ -29,6 +30,7 @@ void ShadowPass::render(const FrameContext& frame) {
         still_fbo_.check_complete();
         still_view_proj_.reset();
         fbo_initialised_ = true;
+        whole_copy_needed_ = true;
     }
     glViewport(0, 0, size, size);
     // No polygon offset: its slope term grows without bound on faces edge-on to the sun
@@ -48,9 +50,25 @@ void ShadowPass::render(const FrameContext& frame) {
         frame.resources.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::StillShadowCasters, sun_view);
         still_view_proj_ = view_proj;
         still_terrain_ = terrain;
+        whole_copy_needed_ = true;
     }
-    glCopyImageSubData(still_map_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, lighting.shadow_map.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       size, size, 1);
+    // The map is the still map plus what moves: where last frame's moving casters drew
+    // is restored from the still map, the rest is still right (a whole copy of a
+    // 1024x1024 map costs llvmpipe about a third of a fill).
+    auto copy = [&](glm::ivec4 r) {
+        glCopyImageSubData(still_map_.id(), GL_TEXTURE_2D, 0, r.x, r.y, 0, lighting.shadow_map.id(), GL_TEXTURE_2D, 0,
+                           r.x, r.y, 0, r.z - r.x, r.w - r.y, 1);
+    };
+    if (whole_copy_needed_) copy({0, 0, size, size});
+    else
+        for (const glm::ivec4& r : dirty_) copy(r);
+    whole_copy_needed_ = false;
+    dirty_.clear();
+    for (const auto& [lo, hi] : frame.resources.geometry.moving_caster_boxes(frame.poses)) {
+        // Orthographic: clip w is 1 everywhere, in front of any near plane at 0.5.
+        const glm::ivec4 r = screen_rect_of_box(view_proj, 0.5f, lo, hi, size, size, 2);
+        if (r.z > r.x && r.w > r.y) dirty_.push_back(r);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     frame.resources.geometry.draw(program_, program_, frame.poses, SceneGeometry::Use::MovingShadowCasters, sun_view);
 }

@@ -1,8 +1,10 @@
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
 
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
@@ -26,6 +28,10 @@ private:
     std::optional<glm::mat4> still_view_proj_;
     uint64_t still_terrain_ = 0;  // SceneGeometry::terrain_generation() of the still map
     bool fbo_initialised_ = false;
+    // Texel rectangles {x0, y0, x1, y1} the last frame's moving casters may have drawn
+    // over the still map's copy: only those are restored from it the next frame.
+    std::vector<glm::ivec4> dirty_;
+    bool whole_copy_needed_ = true;
 };
 
 }  // namespace effects
