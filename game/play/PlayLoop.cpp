@@ -369,8 +369,11 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
         if (options_.ghost) draw_ghost_hud(*options_.ghost, world.tick());
         // The prompt follows the sim's positions (its rule, at this tick); the marker the
         // drawn ones, so it stays on the vehicle as it moves.
+        // Watching a replay, E switches nothing: the prompt is for a player (after a take over).
         const sim::Vehicle aboard = world.get<sim::Player>().vehicle();
-        draw_wayfinding(switch_prompt(aboard, world.get<sim::Car>().position(), world.get<sim::Boat>().position()),
+        const bool watching = hooks.viewer && !hooks.viewer->handed_over();
+        draw_wayfinding(watching ? SwitchPrompt::None
+                                 : switch_prompt(aboard, world.get<sim::Car>().position(), world.get<sim::Boat>().position()),
                         vehicle_marker(aboard, poses.car.position, poses.boat.position, poses.camera,
                                        float(size.width), float(size.height)));
     }
