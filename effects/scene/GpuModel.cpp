@@ -49,40 +49,6 @@ void GpuModel::draw(const gl::Program& program, bool depth_only) const {
     for (const Range& r : ranges_) draw_range(program, depth_only, r);
 }
 
-void GpuModel::draw_visible(const gl::Program& program, bool depth_only, const Frustum& view,
-                            const glm::mat4& model_to_world, bool skip_level_meshes,
-                            const std::function<bool(glm::vec3, glm::vec3)>& select) const {
-    vao_.bind();
-    // Meshes kept one after the other in the index buffer, of one material (the
-    // terrain's tiles along a row), go in one draw: the same triangles in the same order,
-    // a draw's set-up paid once.
-    std::optional<Range> run;
-    auto flush = [&] {
-        if (run) draw_range(program, depth_only, *run);
-        run.reset();
-    };
-    for (const Range& r : ranges_) {
-        const bool kept = [&] {
-            if (skip_level_meshes && r.hi.y - r.lo.y < 1e-3f) return false;
-            const glm::vec3 a(model_to_world * glm::vec4(r.lo, 1.0f)), b(model_to_world * glm::vec4(r.hi, 1.0f));
-            const glm::vec3 lo = glm::min(a, b), hi = glm::max(a, b);
-            return !view.outside(lo, hi) && (!select || select(lo, hi));
-        }();
-        if (!kept) {
-            flush();
-            continue;
-        }
-        if (run && run->first_index + size_t(run->index_count) == r.first_index && run->roughness == r.roughness &&
-            run->metallic == r.metallic && run->emissive == r.emissive) {
-            run->index_count += r.index_count;
-            continue;
-        }
-        flush();
-        run = r;
-    }
-    flush();
-}
-
 void GpuModel::draw_range(const gl::Program& program, bool depth_only, const Range& r) const {
     if (!depth_only) {
         program.set("u_roughness", r.roughness);

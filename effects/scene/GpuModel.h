@@ -1,6 +1,5 @@
 #pragma once
 // A model uploaded to the GPU: one vertex and one index buffer, a draw range per mesh.
-#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,7 +10,6 @@
 #include "effects/gl/Buffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/VertexArray.h"
-#include "effects/scene/Frustum.h"
 #include "effects/scene/SceneDesc.h"
 
 namespace effects {
@@ -22,13 +20,6 @@ public:
 
     // Draws every mesh, setting the material uniforms unless depth_only.
     void draw(const gl::Program& program, bool depth_only) const;
-    // Only the meshes whose bounds (model space, placed by `model_to_world`, which must
-    // keep axes axis-aligned: a translation and scale) `view` can see; with
-    // `skip_level_meshes`, not those whose bounds are flat and level either; with
-    // `select`, only those whose world bounds it keeps.
-    void draw_visible(const gl::Program& program, bool depth_only, const Frustum& view,
-                      const glm::mat4& model_to_world, bool skip_level_meshes = false,
-                      const std::function<bool(glm::vec3, glm::vec3)>& select = {}) const;
     // Every mesh, each placed by `place(mesh_name, mesh_centre)` first (moving parts: a
     // car's wheels). With `eye` (model space) the meshes nearest it come first, so that
     // the early depth test spares what they hide its shading, and those whose box holds

@@ -1,9 +1,7 @@
 #include "effects/scene/GpuTerrain.h"
 
-#include <algorithm>
 #include <cstddef>
 #include <optional>
-
 
 #include "effects/gl/DrawCount.h"
 #include "effects/scene/GpuModel.h"

@@ -6,7 +6,6 @@
 // the very surface the frame shades (no acne where a coarse tile sinks under a fine one).
 #include <cstdint>
 #include <functional>
-#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -27,8 +26,6 @@ public:
     // / (2 tan(fov_y / 2))) of the frame's scene, each tile's error kept within
     // `max_error_px` pixels. Returns whether any tile's level changed.
     bool plan(glm::vec3 eye, float pixels_per_radian, float max_error_px);
-    // Every tile at its level (the finest before any plan).
-    std::span<const uint8_t> levels() const { return levels_; }
 
     // The tiles `view` can see (and `select` keeps), at the planned levels, with the
     // material uniforms unless depth_only; with `skip_level_tiles`, not those flat and

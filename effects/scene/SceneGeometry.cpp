@@ -106,12 +106,10 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     terrain_.draw(ground, depth_only, view, depth_only, select);
 }
 
-bool SceneGeometry::plan_terrain(glm::vec3 eye, float pixels_per_radian) {
+void SceneGeometry::plan_terrain(glm::vec3 eye, float pixels_per_radian) {
     // Half a scene pixel: where the frame is enlarged (the auto scale's floor is about a
     // third of the output), a pixel's error would be a step of three.
-    if (!terrain_.plan(eye, pixels_per_radian, 0.5f)) return false;
-    ++terrain_generation_;
-    return true;
+    if (terrain_.plan(eye, pixels_per_radian, 0.5f)) ++terrain_generation_;
 }
 
 std::vector<std::pair<glm::vec3, glm::vec3>> SceneGeometry::moving_caster_boxes(const FramePoses& poses) const {

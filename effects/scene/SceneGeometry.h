@@ -64,9 +64,8 @@ public:
     const GpuModel& sea() const { return sea_; }
     // The ground's level of detail per tile for the next frame (GpuTerrain::plan), once
     // a frame before its passes, from the frame's eye and its scene's pixels per radian
-    // (viewport height / (2 tan(fov_y / 2))); every draw of the frame follows it. Returns
-    // whether it changed (a cached shadow of the ground is then stale).
-    bool plan_terrain(glm::vec3 eye, float pixels_per_radian);
+    // (viewport height / (2 tan(fov_y / 2))); every draw of the frame follows it.
+    void plan_terrain(glm::vec3 eye, float pixels_per_radian);
     // Counts the plans that changed a tile's level: what a cache of the ground keys on.
     uint64_t terrain_generation() const { return terrain_generation_; }
 
