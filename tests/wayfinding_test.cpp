@@ -117,4 +117,31 @@ TEST(Wayfinding, AVehicleOutOfViewGetsAnEdgeArrowPointingAtIt) {
     }
 }
 
+TEST(Wayfinding, MarkersStayAboveTheBandTheReplayViewersTimelineCovers) {
+    const float margin = game::kMarkerEdgeMargin_px, band = 200.0f, floor_y = kH - margin - band;
+    // Low in view: marked over itself on a bare screen, where the timeline would hide it
+    // an arrow on the band's edge pointing down at it.
+    const glm::vec3 car{100.0f, 1.0f, 0.0f}, low{0.0f, -4.0f, 2.0f};
+    game::VehicleMarker m = game::vehicle_marker(Vehicle::Car, car, low, looking_north(), kW, kH);
+    ASSERT_TRUE(m.in_view);
+    EXPECT_GT(m.position.y, floor_y);
+    m = game::vehicle_marker(Vehicle::Car, car, low, looking_north(), kW, kH, band);
+    ASSERT_TRUE(m.shown);
+    EXPECT_FALSE(m.in_view);
+    EXPECT_NEAR(m.position.y, floor_y, 0.5f);
+    EXPECT_GT(m.direction.y, 0.9f);
+    // Behind the camera: on the band's edge, not under it.
+    m = game::vehicle_marker(Vehicle::Car, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 200.0f}, looking_north(), kW, kH, band);
+    EXPECT_NEAR(m.position.y, floor_y, 0.5f);
+    // All round, every arrow above the band and inside the other margins.
+    for (float angle = 0.0f; angle < 6.3f; angle += 0.1f) {
+        const glm::vec3 boat{300.0f * std::cos(angle), 0.0f, 300.0f * std::sin(angle)};
+        m = game::vehicle_marker(Vehicle::Car, {0.0f, 1.0f, 0.0f}, boat, looking_north(), kW, kH, band);
+        EXPECT_LE(m.position.y, floor_y + 0.5f) << angle;
+        EXPECT_GE(m.position.y, margin - 0.5f) << angle;
+        EXPECT_GE(m.position.x, margin - 0.5f) << angle;
+        EXPECT_LE(m.position.x, kW - margin + 0.5f) << angle;
+    }
+}
+
 }  // namespace

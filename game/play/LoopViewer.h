@@ -35,6 +35,9 @@ public:
     virtual bool hud_shown() const = 0;
     // Whether the keyboard drives from now on (a take over).
     virtual bool handed_over() const = 0;
+    // The band at the screen's foot its last draw() covered, in pixels (0: none): the
+    // HUD's edge arrows stay above it.
+    virtual float covered_bottom_px() const = 0;
 };
 
 }  // namespace game

@@ -375,7 +375,8 @@ void PlayLoop::draw_frame(const LoopHooks& hooks, Screen::Size size, double alph
         draw_wayfinding(watching ? SwitchPrompt::None
                                  : switch_prompt(aboard, world.get<sim::Car>().position(), world.get<sim::Boat>().position()),
                         vehicle_marker(aboard, poses.car.position, poses.boat.position, poses.camera,
-                                       float(size.width), float(size.height)));
+                                       float(size.width), float(size.height),
+                                       hooks.viewer ? hooks.viewer->covered_bottom_px() : 0.0f));
     }
     if (hooks.viewer) hooks.viewer->draw(size);
     if (panel_open_) {

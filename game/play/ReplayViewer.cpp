@@ -134,6 +134,7 @@ void ReplayViewer::draw(Screen::Size) {
     const auto now = std::chrono::steady_clock::now();
     const float dt_s = std::min(0.1f, std::chrono::duration<float>(now - last_draw_).count());
     last_draw_ = now;
+    covered_bottom_px_ = 0.0f;
 
     // The free and orbit cameras: held keys move them, a drag outside the UI turns them.
     ViewerCameraInput in;
@@ -161,7 +162,9 @@ void ReplayViewer::draw(Screen::Size) {
     state.camera = viewer_camera_name(camera_.mode());
     if (auto m = markers_.previous_before(state.tick + 1); m && state.tick - m->tick < kMarkerNamedForTicks)
         state.note = m->label;
-    if (std::optional<uint64_t> seek = draw_timeline(state)) seek_wanted_ = seek;
+    const TimelineDrawn drawn = draw_timeline(state);
+    if (drawn.seek) seek_wanted_ = drawn.seek;
+    covered_bottom_px_ = drawn.covered_px;
 }
 
 std::string ReplayViewer::status() const {

@@ -42,6 +42,7 @@ public:
     bool still() const override;
     bool hud_shown() const override { return hud_shown_; }
     bool handed_over() const override { return handed_over_; }
+    float covered_bottom_px() const override { return covered_bottom_px_; }
 
     // A key's action (what key() does once it has mapped the key).
     void act(const ViewerKeyAction& action);
@@ -89,6 +90,7 @@ private:
     bool recording_ = false;
     bool take_over_failed_ = false;
     std::chrono::steady_clock::time_point last_draw_ = std::chrono::steady_clock::now();
+    float covered_bottom_px_ = 0.0f;  // the timeline's band at the screen's foot, as last drawn
 };
 
 // Watches `replay` in `session` (checked to fit it) on `screen` through the play loop

@@ -58,7 +58,7 @@ std::string replay_clock(uint64_t tick) {
     return buf;
 }
 
-std::optional<uint64_t> draw_timeline(const TimelineState& s) {
+TimelineDrawn draw_timeline(const TimelineState& s) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     const float width = viewport->WorkSize.x - 2.0f * kMargin;
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + kMargin, viewport->WorkPos.y + viewport->WorkSize.y - kMargin),
@@ -68,7 +68,8 @@ std::optional<uint64_t> draw_timeline(const TimelineState& s) {
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
-    std::optional<uint64_t> seek;
+    TimelineDrawn drawn;
+    std::optional<uint64_t>& seek = drawn.seek;
     if (ImGui::Begin("timeline", nullptr, flags)) {
         const std::string now = replay_clock(s.tick), total = replay_clock(s.ticks);
         ImGui::Text("%s / %s   tick %llu / %llu   %s%s   camera: %s", now.c_str(), total.c_str(),
@@ -106,8 +107,9 @@ std::optional<uint64_t> draw_timeline(const TimelineState& s) {
             ImGui::SetTooltip("%s", replay_clock(geometry.tick_at(ImGui::GetIO().MousePos.x)).c_str());
         ImGui::TextDisabled("%s", viewer_keys_hint());
     }
+    drawn.covered_px = ImGui::GetWindowHeight() + kMargin;
     ImGui::End();
-    return seek;
+    return drawn;
 }
 
 }  // namespace game

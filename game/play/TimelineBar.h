@@ -39,8 +39,12 @@ struct TimelineState {
     std::string note;    // e.g. the marker just passed, a desync; may be empty
 };
 
-// Draws the timeline at the foot of the current ImGui frame; returns the tick a click
-// or a drag on the bar asked for.
-std::optional<uint64_t> draw_timeline(const TimelineState& state);
+struct TimelineDrawn {
+    std::optional<uint64_t> seek;  // the tick a click or a drag on the bar asked for
+    float covered_px = 0.0f;       // the band at the screen's foot it covers, its margin included
+};
+
+// Draws the timeline at the foot of the current ImGui frame.
+TimelineDrawn draw_timeline(const TimelineState& state);
 
 }  // namespace game

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vector_relational.hpp>
 #include <glm/vec4.hpp>
 
 #include "effects/scene/Camera.h"
@@ -40,7 +41,7 @@ std::string switch_prompt_text(SwitchPrompt prompt) {
 }
 
 VehicleMarker vehicle_marker(sim::Vehicle aboard, const glm::vec3& car, const glm::vec3& boat,
-                             const sim::CameraView& camera, float width, float height) {
+                             const sim::CameraView& camera, float width, float height, float covered_bottom_px) {
     VehicleMarker m;
     m.vehicle = aboard == sim::Vehicle::Car ? sim::Vehicle::Boat : sim::Vehicle::Car;
     const glm::vec3 from = aboard == sim::Vehicle::Car ? car : boat;
@@ -52,11 +53,14 @@ VehicleMarker vehicle_marker(sim::Vehicle aboard, const glm::vec3& car, const gl
     const effects::Camera cam = effects::make_camera(camera, width / height);
     const glm::vec4 clip = cam.view_proj * glm::vec4(target + glm::vec3(0.0f, kMarkerHeight_m, 0.0f), 1.0f);
     const glm::vec2 centre(width * 0.5f, height * 0.5f);
-    const glm::vec2 inset = glm::max(centre - kMarkerEdgeMargin_px, glm::vec2(1.0f));
+    // The arrows' box: the screen less the margin, and less the covered band at its foot
+    // (but never shrunk past the centre, from which the edge arrows are cast).
+    const glm::vec2 lo(std::min(kMarkerEdgeMargin_px, centre.x - 1.0f), std::min(kMarkerEdgeMargin_px, centre.y - 1.0f));
+    const glm::vec2 hi(width - lo.x, std::max(height - lo.y - std::max(covered_bottom_px, 0.0f), centre.y + 1.0f));
     if (clip.w > 1e-3f) {
         const glm::vec2 ndc(clip.x / clip.w, clip.y / clip.w);
         const glm::vec2 pixel = centre + glm::vec2(ndc.x, -ndc.y) * centre;
-        if (std::fabs(pixel.x - centre.x) <= inset.x && std::fabs(pixel.y - centre.y) <= inset.y) {
+        if (glm::all(glm::greaterThanEqual(pixel, lo)) && glm::all(glm::lessThanEqual(pixel, hi))) {
             m.in_view = true;
             m.position = pixel;
             m.direction = {0.0f, 1.0f};  // pointing down at it
@@ -68,7 +72,9 @@ VehicleMarker vehicle_marker(sim::Vehicle aboard, const glm::vec3& car, const gl
     // the division would mirror it.
     glm::vec2 d = glm::vec2(clip.x, -clip.y) * centre;
     if (glm::length(d) < 1e-6f) d = {0.0f, 1.0f};  // straight behind: point down, towards the back
-    const float reach = std::min(inset.x / std::max(std::fabs(d.x), 1e-6f), inset.y / std::max(std::fabs(d.y), 1e-6f));
+    const glm::vec2 room((d.x >= 0.0f ? hi.x : lo.x) - centre.x, (d.y >= 0.0f ? hi.y : lo.y) - centre.y);
+    const float reach = std::min(std::fabs(room.x) / std::max(std::fabs(d.x), 1e-6f),
+                                 std::fabs(room.y) / std::max(std::fabs(d.y), 1e-6f));
     m.direction = glm::normalize(d);
     m.position = centre + d * reach;
     return m;

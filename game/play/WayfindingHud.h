@@ -36,8 +36,10 @@ inline constexpr float kMarkerEdgeMargin_px = 36.0f;
 // How far above a vehicle's origin its marker points (over the roof or the cabin).
 inline constexpr float kMarkerHeight_m = 2.5f;
 
+// `covered_bottom_px`: a band at the screen's foot that other UI covers (the replay
+// viewer's timeline): the marker stays above it, as above the screen's edge.
 VehicleMarker vehicle_marker(sim::Vehicle aboard, const glm::vec3& car, const glm::vec3& boat,
-                             const sim::CameraView& camera, float width, float height);
+                             const sim::CameraView& camera, float width, float height, float covered_bottom_px = 0.0f);
 
 // Draws the prompt and the marker into the current ImGui frame.
 void draw_wayfinding(SwitchPrompt prompt, const VehicleMarker& marker);
