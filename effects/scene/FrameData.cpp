@@ -40,15 +40,22 @@ glm::mat4 sun_shadow_view_proj(const Camera& camera, glm::vec3 sun_dir, float gr
     return proj * view;
 }
 
+SkyOcclusionFraming sky_occlusion_framing(glm::vec3 lo, glm::vec3 hi) {
+    // Looking straight down from above the highest prop over their square footprint.
+    SkyOcclusionFraming f;
+    f.centre = glm::vec2(0.5f * (lo.x + hi.x), 0.5f * (lo.z + hi.z));
+    f.half = 0.5f * std::max(hi.x - lo.x, hi.z - lo.z) + 1.0f;
+    f.top = hi.y + 1.0f;
+    f.depth_range = f.top - lo.y + 1.0f;
+    return f;
+}
+
 glm::mat4 sky_occlusion_view_proj(glm::vec3 lo, glm::vec3 hi) {
     if (!(hi.x > lo.x && hi.z > lo.z)) return glm::mat4(1.0f);  // no props: nothing above anything
-    // Looking straight down from above the highest prop over their square footprint.
-    const glm::vec2 centre(0.5f * (lo.x + hi.x), 0.5f * (lo.z + hi.z));
-    const float half = 0.5f * std::max(hi.x - lo.x, hi.z - lo.z) + 1.0f;
-    const float top = hi.y + 1.0f;
-    const glm::mat4 view =
-        glm::lookAt(glm::vec3(centre.x, top, centre.y), glm::vec3(centre.x, top - 1.0f, centre.y), glm::vec3(0, 0, -1));
-    const glm::mat4 proj = glm::ortho(-half, half, -half, half, 0.0f, top - lo.y + 1.0f);
+    const SkyOcclusionFraming f = sky_occlusion_framing(lo, hi);
+    const glm::mat4 view = glm::lookAt(glm::vec3(f.centre.x, f.top, f.centre.y),
+                                       glm::vec3(f.centre.x, f.top - 1.0f, f.centre.y), glm::vec3(0, 0, -1));
+    const glm::mat4 proj = glm::ortho(-f.half, f.half, -f.half, f.half, 0.0f, f.depth_range);
     return proj * view;
 }
 

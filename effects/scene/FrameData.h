@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "effects/energy/EnergyView.h"
@@ -48,6 +49,14 @@ glm::mat4 sun_shadow_view_proj(const Camera& camera, glm::vec3 sun_dir, float gr
 // Straight down over the props' bounds [lo, hi] (their square footprint, from above the
 // highest): the sky-occlusion map's view-projection. The identity without props.
 glm::mat4 sky_occlusion_view_proj(glm::vec3 props_min, glm::vec3 props_max);
+
+// What that view takes in: a square of the xz plane, `half` metres either side of
+// `centre` (x, z), looked at straight down from `top` through `depth_range` metres.
+struct SkyOcclusionFraming {
+    glm::vec2 centre{0.0f};
+    float half = 0.0f, top = 0.0f, depth_range = 0.0f;
+};
+SkyOcclusionFraming sky_occlusion_framing(glm::vec3 props_min, glm::vec3 props_max);
 
 struct FrameData {
     WeatherLook weather;                        // the road's wetness, the rain rate

@@ -27,13 +27,20 @@ bool GpuTerrain::plan(glm::vec3 eye, float pixels_per_radian, float max_error_px
 }
 
 void GpuTerrain::draw(const gl::Program& program, bool depth_only, const Frustum& view, bool skip_level_tiles,
-                      const std::function<bool(glm::vec3, glm::vec3)>& select) const {
+                      const std::function<bool(glm::vec3, glm::vec3)>& select, const gl::Program* open_sky) const {
+    vao_.bind();
+    draw_tiles(program, depth_only, view, skip_level_tiles, select, &TerrainMesh::Tile::level);
+    if (open_sky) open_sky->use();
+    draw_tiles(open_sky ? *open_sky : program, depth_only, view, skip_level_tiles, select, &TerrainMesh::Tile::open_level);
+}
+
+void GpuTerrain::draw_tiles(const gl::Program& program, bool depth_only, const Frustum& view, bool skip_level_tiles,
+                            const std::function<bool(glm::vec3, glm::vec3)>& select, Ranges ranges) const {
     if (!depth_only) {
         program.set("u_roughness", roughness_);
         program.set("u_metallic", 0.0f);
         program.set("u_emissive", glm::vec3(0.0f));
     }
-    vao_.bind();
     // Tiles next to each other at one level lie one after the other in the index buffer:
     // one draw for the run, its set-up paid once.
     std::optional<TerrainMesh::IndexRange> run;
@@ -53,7 +60,7 @@ void GpuTerrain::draw(const gl::Program& program, bool depth_only, const Frustum
             flush();
             continue;
         }
-        const TerrainMesh::IndexRange r = t.level[levels_[i]];
+        const TerrainMesh::IndexRange r = (t.*ranges)[levels_[i]];
         if (run && run->first + run->count == r.first) {
             run->count += r.count;
             continue;

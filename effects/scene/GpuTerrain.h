@@ -5,6 +5,7 @@
 // scene pixel. Every pass of a frame draws the same plan, so the sun's shadow map holds
 // the very surface the frame shades (no acne where a coarse tile sinks under a fine one).
 #include <cstdint>
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -29,11 +30,19 @@ public:
 
     // The tiles `view` can see (and `select` keeps), at the planned levels, with the
     // material uniforms unless depth_only; with `skip_level_tiles`, not those flat and
-    // level (they shade nothing: the sun's shadow casters).
+    // level (they shade nothing: the sun's shadow casters). The triangles open to the sky
+    // (split_open_sky) go after the others, through `open_sky` if given (the ground's
+    // program without the sky-occlusion lookup, its uniforms set as `program`'s).
     void draw(const gl::Program& program, bool depth_only, const Frustum& view, bool skip_level_tiles,
-              const std::function<bool(glm::vec3, glm::vec3)>& select = {}) const;
+              const std::function<bool(glm::vec3, glm::vec3)>& select = {},
+              const gl::Program* open_sky = nullptr) const;
 
 private:
+    using Ranges = std::array<TerrainMesh::IndexRange, TerrainMesh::kLevels> TerrainMesh::Tile::*;
+    // The tiles kept as draw() says, their triangles in `ranges` (Tile::level or open_level).
+    void draw_tiles(const gl::Program& program, bool depth_only, const Frustum& view, bool skip_level_tiles,
+                    const std::function<bool(glm::vec3, glm::vec3)>& select, Ranges ranges) const;
+
     std::vector<TerrainMesh::Tile> tiles_;
     std::vector<uint8_t> levels_;
     float roughness_;

@@ -19,19 +19,25 @@ const gl::Program& LitScene::depth(const Camera& camera) {
 
 LitScene::Programs LitScene::programs(const FrameContext& frame, const QualitySettings& quality, bool line_lights,
                                       bool normals, const Camera& camera) {
-    if (!ground_)
-        ground_.emplace(label_ + ".ground", std::vector<std::string_view>{"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"},
-                        std::vector<std::string>{"GROUND", "ROAD_COUNT " + std::to_string(frame.resources.geometry.ground_road_count())});
+    if (!ground_) {
+        const std::vector<std::string_view> files{"scene/mesh.vert.glsl", "scene/mesh.frag.glsl"};
+        const std::string roads = "ROAD_COUNT " + std::to_string(frame.resources.geometry.ground_road_count());
+        ground_.emplace(label_ + ".ground", files, std::vector<std::string>{"GROUND", roads});
+        open_sky_ground_.emplace(label_ + ".ground.open_sky", files, std::vector<std::string>{"GROUND", roads, "OPEN_SKY 1"});
+    }
     const gl::Program& objects = objects_.get(quality, line_lights, normals);
     const gl::Program& ground = ground_->get(quality, line_lights, normals);
-    for (const gl::Program* p : {&objects, &ground}) {
+    const gl::Program& open_sky_ground = open_sky_ground_->get(quality, line_lights, normals);
+    for (const gl::Program* p : {&objects, &ground, &open_sky_ground}) {
         frame.lighting.apply(*p, frame.data);
         p->set("u_view_proj", camera.view_proj);
         p->set("u_eye", camera.eye);
     }
-    frame.resources.geometry.apply_ground(ground);
-    ground.set("u_wetness", frame.data.weather.road_wetness);
-    return {objects, ground};
+    for (const gl::Program* p : {&ground, &open_sky_ground}) {
+        frame.resources.geometry.apply_ground(*p);
+        p->set("u_wetness", frame.data.weather.road_wetness);
+    }
+    return {objects, ground, open_sky_ground};
 }
 
 void LitScene::draw_sky(const FrameData& data, const Camera& camera, bool normals) {

@@ -21,6 +21,7 @@ public:
     struct Programs {
         const gl::Program& objects;
         const gl::Program& ground;
+        const gl::Program& open_sky_ground;  // the ground without the sky-occlusion lookup (OPEN_SKY)
     };
     // Both programs in the variant for `quality`, the line lights and the normals output,
     // with the frame's lighting, the ground's roads and wetness, and `camera`'s view set.
@@ -38,7 +39,7 @@ public:
 private:
     std::string label_;
     LitProgram objects_;
-    std::optional<LitProgram> ground_;  // made at the first frame: it needs the level's road count
+    std::optional<LitProgram> ground_, open_sky_ground_;  // made at the first frame: they need the level's road count
     std::optional<gl::Program> depth_;  // made at first use: the mirror never asks
     std::array<std::optional<gl::Program>, 2> sky_;  // without, with the normals output
 };

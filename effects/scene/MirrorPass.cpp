@@ -137,7 +137,7 @@ void MirrorPass::draw_behind(const FrameContext& frame, const View& v) {
     // The car is left out: the mirror looks out of it, through where its rear window is.
     const Frustum behind(v.camera.view_proj);
     frame.resources.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, behind, {},
-                              SceneGeometry::Car::LeftOut);
+                              SceneGeometry::Car::LeftOut, std::nullopt, &p.open_sky_ground);
 
     p.objects.use();
     p.objects.set("u_model", glm::mat4(1.0f));

@@ -72,7 +72,7 @@ void OpaquePass::render(const FrameContext& frame) {
         if (line_lights)
             select = [&lights, lit](glm::vec3 lo, glm::vec3 hi) { return line_lights_reach(lights, lo, hi) == lit; };
         frame.resources.geometry.draw(p.objects, p.ground, frame.poses, SceneGeometry::Use::Shading, view, select,
-                                      SceneGeometry::Car::Drawn, frame.camera.eye);
+                                      SceneGeometry::Car::Drawn, frame.camera.eye, &p.open_sky_ground);
     }
 
     // Sky last, only where nothing was drawn.

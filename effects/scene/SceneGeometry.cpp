@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 
 #include <glm/common.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
 #include "effects/scene/CabinInstruments.h"
+#include "effects/scene/SceneLighting.h"  // kSkyMapSize
 #include "effects/scene/TerrainMesh.h"
 
 namespace effects {
@@ -19,6 +21,31 @@ constexpr int kMaxRoads = 16;  // size of u_roads in mesh.frag.glsl
 Model glowing(Model m, glm::vec3 emissive) {
     for (MeshData& mesh : m.meshes) mesh.emissive = emissive;
     return m;
+}
+
+std::vector<OpenSky::Box> prop_boxes(const SceneDesc& desc) {
+    std::vector<OpenSky::Box> boxes;
+    for (const PropInstance& p : desc.props) boxes.push_back(world_box(desc.models[size_t(p.model)], p.transform));
+    return boxes;
+}
+
+// The boxes' bounds (zero without any).
+OpenSky::Box bounds(const std::vector<OpenSky::Box>& boxes) {
+    OpenSky::Box b{glm::vec3(0.0f), glm::vec3(0.0f)};
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        b.first = i == 0 ? boxes[i].first : glm::min(b.first, boxes[i].first);
+        b.second = i == 0 ? boxes[i].second : glm::max(b.second, boxes[i].second);
+    }
+    return b;
+}
+
+// The ground, its triangles with no prop above them apart (the sky-occlusion map's).
+TerrainMesh ground_mesh(const sim::Terrain& terrain, const SceneDesc& desc) {
+    TerrainMesh mesh = make_terrain_mesh(terrain, 2.0f);
+    std::vector<OpenSky::Box> props = prop_boxes(desc);
+    const OpenSky::Box b = bounds(props);
+    split_open_sky(mesh, OpenSky(std::move(props), b.first, b.second, kSkyMapSize));
+    return mesh;
 }
 
 // The model matrix, and the normal matrix once per draw on the CPU, not per vertex on the GPU.
@@ -43,7 +70,7 @@ std::pair<glm::vec3, glm::vec3> world_box(const Model& m, const glm::mat4& trans
 SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
     : desc_(desc),
       level_(terrain.level()),
-      terrain_(make_terrain_mesh(terrain, 2.0f)),
+      terrain_(ground_mesh(terrain, desc)),
       sea_(make_sea_model(terrain.level().sea_level_m, 3000.0f)),
       sphere_(make_sphere_model(12, 20)),
       box_(make_box_model()),
@@ -51,11 +78,8 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
       hit_sphere_(glowing(make_sphere_model(12, 20), glm::vec3(0.2f, 1.4f, 0.3f))),
       batches_(desc) {
     for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
-    for (size_t i = 0; i < desc.props.size(); ++i) {
-        const auto [lo, hi] = world_box(desc.models[size_t(desc.props[i].model)], desc.props[i].transform);
-        props_min_ = i == 0 ? lo : glm::min(props_min_, lo);
-        props_max_ = i == 0 ? hi : glm::max(props_max_, hi);
-    }
+    std::tie(props_min_, props_max_) = bounds(prop_boxes(desc));
+
 }
 
 int SceneGeometry::ground_road_count() const { return std::min<int>(int(level_.roads.size()), kMaxRoads); }
@@ -86,7 +110,8 @@ void SceneGeometry::draw_vehicle(const gl::Program& p, sim::Vehicle vehicle, con
 }
 
 void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const FramePoses& poses, Use use,
-                         const Frustum& view, const Select& select, Car car, const std::optional<glm::vec3>& eye) const {
+                         const Frustum& view, const Select& select, Car car, const std::optional<glm::vec3>& eye,
+                         const gl::Program* open_sky_ground) const {
     const bool depth_only = use != Use::Shading;
     auto material = [&](glm::vec4 tint) {
         if (!depth_only) p.set("u_tint", tint);
@@ -101,9 +126,13 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     // A level stretch of ground shades nothing: a ray rising from anything above the
     // ground towards the sun can only meet the ground where it rises. Left out of
     // the shadow map, it saves the raster of most of the map and cannot self-shadow.
+    if (open_sky_ground) {
+        open_sky_ground->use();
+        place(*open_sky_ground, glm::mat4(1.0f), depth_only);
+    }
     ground.use();
     place(ground, glm::mat4(1.0f), depth_only);
-    terrain_.draw(ground, depth_only, view, depth_only, select);
+    terrain_.draw(ground, depth_only, view, depth_only, select, open_sky_ground);
 }
 
 void SceneGeometry::plan_terrain(glm::vec3 eye, float pixels_per_radian) {

@@ -42,9 +42,11 @@ public:
     // (GpuModel::draw_parts). Shading the car, sets u_cabin_lining per mesh
     // (mesh.frag.glsl) and leaves it 0. The props are drawn merged (StaticBatches):
     // `select` and `view` keep or leave a batch (a material's meshes in a square) whole.
+    // `open_sky_ground`: `ground` without the sky-occlusion lookup, for the tiles with
+    // nothing above them (GpuTerrain::draw), its uniforms set as `ground`'s.
     void draw(const gl::Program& objects, const gl::Program& ground, const FramePoses& poses, Use use,
               const Frustum& view, const Select& select = {}, Car car = Car::Drawn,
-              const std::optional<glm::vec3>& eye = std::nullopt) const;
+              const std::optional<glm::vec3>& eye = std::nullopt, const gl::Program* open_sky_ground = nullptr) const;
     // World boxes holding everything a MovingShadowCasters draw can draw for `poses`
     // (the car and the boat with room for their turning wheels, thrown objects, markers).
     std::vector<std::pair<glm::vec3, glm::vec3>> moving_caster_boxes(const FramePoses& poses) const;

@@ -15,6 +15,9 @@
 
 namespace effects {
 
+// The sky-occlusion map's texels a side (SkyOcclusionPass draws the props into it).
+inline constexpr int kSkyMapSize = 1024;
+
 class SceneLighting {
 public:
     static constexpr GLuint kEnvUnit = 14;
@@ -22,7 +25,7 @@ public:
     static constexpr GLuint kSkyUnit = 13;
     static constexpr GLuint kLineLightBinding = 3;
 
-    SceneLighting(int env_size, int shadow_size, int sky_size = 1024);
+    SceneLighting(int env_size, int shadow_size, int sky_size = kSkyMapSize);
 
     // Sky uniforms only (sky background, environment faces).
     static void apply_sky(const gl::Program& program, const SkyState& sky);

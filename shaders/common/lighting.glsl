@@ -144,7 +144,13 @@ vec3 shade_surface_seeing_sky(vec3 base, float roughness, float metallic, vec3 w
 }
 
 vec3 shade_surface(vec3 base, float roughness, float metallic, vec3 world_pos, vec3 n, vec3 eye) {
+#if defined(OPEN_SKY) && OPEN_SKY == 1
+    // Ground the sky map has nothing above (GpuTerrain's open tiles): its lookup would
+    // answer exactly 1, and it costs a tenth of the opaque pass on llvmpipe.
+    return shade_surface_seeing_sky(base, roughness, metallic, world_pos, n, eye, 1.0);
+#else
     return shade_surface_seeing_sky(base, roughness, metallic, world_pos, n, eye, sky_visibility(world_pos, n));
+#endif
 }
 
 // Aerial perspective: distant things fade into the sky's horizon colour.
