@@ -25,6 +25,27 @@ uniform mat4 u_reproject_vehicle;  // the same for a point on the vehicle neares
 uniform float u_current_weight;  // 1: no history (the first frame, a resize)
 layout(location = 0) out vec4 o_colour;
 
+// The history at uv through a Catmull-Rom spline (sharp, unlike bilinear) in five
+// bilinear fetches: the middle 2x2 texels' weights in one, one each side, the corners
+// (the smallest weights) left out and the sum normalised.
+vec3 history_at(vec2 uv) {
+    const vec2 size = vec2(textureSize(u_history, 0));
+    const vec2 pos = uv * size;
+    const vec2 t1 = floor(pos - 0.5) + 0.5;
+    const vec2 f = pos - t1;
+    const vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+    const vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+    const vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+    const vec2 w3 = f * f * (-0.5 + 0.5 * f);
+    const vec2 w12 = w1 + w2;
+    const vec2 t12 = (t1 + w2 / w12) / size, t0 = (t1 - 1.0) / size, t3 = (t1 + 2.0) / size;
+    const float wc = w12.x * w12.y, wl = w0.x * w12.y, wr = w3.x * w12.y, wb = w12.x * w0.y, wt = w12.x * w3.y;
+    const vec3 sum = texture(u_history, t12).rgb * wc + texture(u_history, vec2(t0.x, t12.y)).rgb * wl +
+                     texture(u_history, vec2(t3.x, t12.y)).rgb * wr + texture(u_history, vec2(t12.x, t0.y)).rgb * wb +
+                     texture(u_history, vec2(t12.x, t3.y)).rgb * wt;
+    return sum / (wc + wl + wr + wb + wt);
+}
+
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const ivec2 size = textureSize(u_current, 0);
@@ -38,15 +59,22 @@ void main() {
     const vec3 diagonal = across + float(s.y) * dFdyFine(across);
     const vec3 out_x = texelFetch(u_current, clamp(p - ivec2(s.x, 0), ivec2(0), size - 1), 0).rgb;
     const vec3 out_y = texelFetch(u_current, clamp(p - ivec2(0, s.y), ivec2(0), size - 1), 0).rgb;
-    vec3 lo = min(min(min(c, across), min(beside, diagonal)), min(out_x, out_y));
-    vec3 hi = max(max(max(c, across), max(beside, diagonal)), max(out_x, out_y));
+    const vec3 corner_x = out_y + float(s.x) * dFdxFine(out_y);
+    const vec3 corner_y = out_x + float(s.y) * dFdyFine(out_x);
+    vec3 lo = min(min(min(c, across), min(beside, diagonal)), min(min(out_x, out_y), min(corner_x, corner_y)));
+    vec3 hi = max(max(max(c, across), max(beside, diagonal)), max(max(out_x, out_y), max(corner_x, corner_y)));
 #ifdef FROM_HDR
     c = tonemap(c * u_exposure);
     lo = tonemap(lo * u_exposure);
     hi = tonemap(hi * u_exposure);
 #endif
 
-    const float depth = texelFetch(u_depth, p, 0).r;
+    const float d = texelFetch(u_depth, p, 0).r;
+    const float d_across = d + float(s.x) * dFdxFine(d);
+    const float d_out_x = texelFetch(u_depth, clamp(p - ivec2(s.x, 0), ivec2(0), size - 1), 0).r;
+    const float d_out_y = texelFetch(u_depth, clamp(p - ivec2(0, s.y), ivec2(0), size - 1), 0).r;
+    const float depth = min(min(min(d, d_across), min(d + float(s.y) * dFdyFine(d), d_across + float(s.y) * dFdyFine(d_across))),
+                            min(min(d_out_x, d_out_y), min(d_out_y + float(s.x) * dFdxFine(d_out_y), d_out_x + float(s.y) * dFdyFine(d_out_x))));
     const vec2 ndc = (gl_FragCoord.xy / vec2(size)) * 2.0 - 1.0;
     const vec4 point = vec4(ndc, depth * 2.0 - 1.0, 1.0);
     vec4 before = u_reproject * point;
