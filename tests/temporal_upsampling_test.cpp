@@ -2,11 +2,14 @@
 // upscale.frag.glsl): what auto draws small comes out looking like the native frame.
 // - A slanted high-contrast edge drawn small, jittered frame after frame, resolved and
 //   upscaled, runs straight: no stair taller than 2 output pixels, where the one frame
-//   enlarged has the small scene's own stairs (1/scale pixels).
+//   enlarged has the small scene's own stairs (1/scale pixels); moving (the view
+//   panning, or a near edge against a still background), none taller than 2.5 at 0.35.
 // - At every bundled replay's checkpoints, the frame drawn at scale 0.5 through the
 //   auto path (medium, jittered and resolved, after the frames of the ticks before it)
 //   is within SSIM 0.9 of the native medium frame of the same tick, but for the known
 //   misses listed below (the rain's windshield, the tank's liquid, the warehouse's siding).
+// - harbour_drive driven past the house at 0.35 and 1280x720, as auto draws it at its
+//   floor, is within SSIM 0.94 of native.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -190,19 +193,6 @@ protected:
                 red[size_t(y * kOutW + x)] = im.pixels[(size_t(kOutH - 1 - y) * kOutW + size_t(x)) * 4];
         moved_ = double(frames - 1) * velocity / scale;
         step_ = velocity.x / scale;
-        if (const char* dbg = std::getenv("TAA_DEBUG_DIR")) {
-            char name[128];
-            std::snprintf(name, sizeof name, "%s/edge_%d_%.2f_%.2f_%.2f.png", dbg, int(motion), scale, velocity.x, velocity.y);
-            game::write_png(name, im);
-            std::vector<double> dev;
-            for (int x = 8; x < kOutW - 8; x += 4) {
-                double dark = 0.0;
-                for (int y = 0; y < kOutH; ++y)
-                    dark += std::clamp(double(kLight - red[size_t(y * kOutW + x)]) / double(kLight - kDark), 0.0, 1.0);
-                std::printf("%.1f ", dark - (kY0 + moved_.y + kSlope * (x + 0.5 - moved_.x)));
-            }
-            std::printf("\n");
-        }
         return red;
     }
 
@@ -242,18 +232,24 @@ TEST_F(TemporalEdgeTest, ASlantedEdgeHasNoStairTallerThanTwoOutputPixels) {
 // The same edge while the view pans (a car driving past a house's roof): the history is
 // resampled where the edge was, a fraction of a texel off its centres each frame, and the
 // clamp to this frame's neighbourhood must not cut the edge back to this frame's stairs.
-TEST_F(TemporalEdgeTest, AMovingSlantedEdgeHasNoStairTallerThanTwoOutputPixels) {
+// The same edge while it moves, at speeds a driven car gives the house's roof and the
+// lamp post at 20 fps (a fraction of a scene pixel to a few a frame): the history is
+// read a fraction of a texel off its centres, and the clamp to this frame's
+// neighbourhood must not cut the edge back to this frame's stairs. At 0.35 a stair of
+// the one frame is 2.86 output pixels; the resolved edge must stay under 2.5 there
+// (under 2 at 0.5). Before the reprojection took the nearest point around a pixel,
+// the near edge against a still background had stairs of up to 7.5 output pixels.
+TEST_F(TemporalEdgeTest, AMovingSlantedEdgeHasNoSceneSizedStairs) {
     for (const Motion motion : {Motion::Pan, Motion::Parallax})
         for (double scale : {0.35, 0.5})
-            for (const glm::dvec2 velocity :
-                 {glm::dvec2(1.0, 0.0), glm::dvec2(0.5, 0.0), glm::dvec2(0.0, 0.5), glm::dvec2(0.37, 0.11),
-                  glm::dvec2(1.3, -0.45), glm::dvec2(-2.6, 0.3)}) {
-                const int frames = std::getenv("TAA_FRAMES") ? std::atoi(std::getenv("TAA_FRAMES")) : 16;
-                const double resolved = worst_departure(upscaled_edge(scale, frames, velocity, motion));
-                std::printf("%s scale %.2f, %.2f, %.2f scene px a frame: the edge strays %.2f px from its line\n",
-                            motion == Motion::Pan ? "pan" : "parallax", scale, velocity.x, velocity.y, resolved);
-                EXPECT_LE(2.0 * resolved, 2.0) << "stairs " << 2.0 * resolved << " output pixels tall at scale "
-                                               << scale << " moving " << velocity.x << ", " << velocity.y;
+            for (const glm::dvec2 velocity : {glm::dvec2(1.0, 0.0), glm::dvec2(0.5, 0.0), glm::dvec2(0.0, 0.5),
+                                              glm::dvec2(0.37, 0.11), glm::dvec2(1.3, -0.45), glm::dvec2(-2.6, 0.3)}) {
+                const double stair = 2.0 * worst_departure(upscaled_edge(scale, 16, velocity, motion));
+                const char* how = motion == Motion::Pan ? "panning" : "against a still background";
+                std::printf("scale %.2f, %s at %.2f, %.2f scene px a frame: stairs %.2f output px\n", scale, how,
+                            velocity.x, velocity.y, stair);
+                EXPECT_LE(stair, scale < 0.4 ? 2.5 : 2.0)
+                    << "scale " << scale << ", " << how << " at " << velocity.x << ", " << velocity.y;
             }
 }
 
@@ -265,19 +261,18 @@ class TemporalCheckpointTest : public HeadlessTest {};
 // scene's pixels: the windshield's drops in the rain (native shows each drop's bright
 // rim; at 0.5 they are two or three pixels across), the warehouse's corrugated siding
 // (dust 640) and the tank's liquid, whose screen-space smoothing follows the scene's
-// pixels (tank 798 to 1160). A resolve at the scene's size cannot
-// bring back what its pixels never held; a history at the output's size would, at
-// about three more fills a frame on llvmpipe (docs/PERFORMANCE.md).
+// pixels (tank 1100 and 1160; its other driver-view checkpoints passed 0.9 once the
+// reprojection took the nearest point around each pixel). A resolve at the scene's
+// size cannot bring back what its pixels never held; a history at the output's size
+// would, at about three more fills a frame on llvmpipe (docs/PERFORMANCE.md).
 double bar_for(const std::string& name) {
     static const std::vector<std::pair<std::string, double>> misses{
-        // harbour_boat 682 and 703: the crown's rim beads, the drops' highlights and the foam's
-        // lace are a pixel or two across at 640x360 (0.883 and 0.899 when they came in).
-        {"harbour_boat_682", 0.86},  {"harbour_boat_703", 0.87},
-        {"harbour_dust_640", 0.84},  {"harbour_rain_240", 0.83},  {"harbour_rain_260", 0.78},
-        {"harbour_rain_300", 0.82},  {"harbour_rain_450", 0.82},  {"harbour_rain_700", 0.77},
-        {"harbour_rain_960", 0.78},  {"harbour_rain_1080", 0.85}, {"harbour_rain_1690", 0.63},
-        {"harbour_tank_798", 0.86},  {"harbour_tank_810", 0.86},  {"harbour_tank_1025", 0.86},
-        {"harbour_tank_1035", 0.86}, {"harbour_tank_1100", 0.83}, {"harbour_tank_1160", 0.84}};
+        // harbour_boat 682: the crown's rim beads, the drops' highlights and the foam's
+        // lace are a pixel or two across at 640x360 (0.883 when it came in, 0.874 now).
+        {"harbour_boat_682", 0.86},  {"harbour_dust_640", 0.86},  {"harbour_rain_240", 0.87},
+        {"harbour_rain_260", 0.82},  {"harbour_rain_300", 0.85},  {"harbour_rain_450", 0.86},
+        {"harbour_rain_700", 0.83},  {"harbour_rain_960", 0.83},  {"harbour_rain_1080", 0.85},
+        {"harbour_rain_1690", 0.69}, {"harbour_tank_1100", 0.87}, {"harbour_tank_1160", 0.87}};
     for (const auto& [miss, bar] : misses)
         if (miss == name) return bar;
     return 0.9;
@@ -332,11 +327,12 @@ TEST_F(TemporalCheckpointTest, HalfScaleFramesAreWithinSsim09OfNative) {
     }
 }
 
-}  // namespace
-
-// harbour_drive while the car drives past the house and the lamp post (ticks 380-440),
+// harbour_drive while the car drives past the house and the lamp post (ticks 350-441),
 // drawn as the game draws auto at its floor: 1280x720 at scale 0.35, a frame every
-// three ticks (about the 20 fps auto runs at there), against the native medium frame.
+// three ticks (about the 20 fps auto runs at there), against the native medium frame
+// at ticks 390 and 420 (0.954 and 0.957; SSIM hardly sees a moving edge's stairs, which
+// the edge tests above measure: this one guards the whole picture, and with
+// SPINDRIFT_TEMPORAL_PNG_DIR set writes both frames to look at).
 TEST_F(TemporalCheckpointTest, MovingEdgesAtTheFloor) {
     const fs::path dir = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays";
     const game::Replay replay = game::read_replay(dir / "harbour_drive.replay");
@@ -363,10 +359,14 @@ TEST_F(TemporalCheckpointTest, MovingEdgesAtTheFloor) {
                                                     {.time_s = double(at) * sim::kTickSeconds});
         const game::ImageRGBA8 resolved = small.ldr();
         const std::string name = "moving_" + std::to_string(at);
-        std::printf("%s: SSIM %.4f\n", name.c_str(), ssim(full, resolved));
+        const double s = ssim(full, resolved);
+        std::printf("%s: SSIM %.4f\n", name.c_str(), s);
+        EXPECT_GE(s, 0.94) << name;
         if (out) {
             game::write_png(fs::path(out) / (name + "_native.png"), full);
             game::write_png(fs::path(out) / (name + "_auto.png"), resolved);
         }
     }
 }
+
+}  // namespace
