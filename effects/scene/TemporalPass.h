@@ -23,7 +23,9 @@ namespace effects {
 // nearer this frame's colour is taken. Over a few frames an edge's pixels take its
 // coverage instead of all-or-nothing: the scene is anti-aliased before the upscale
 // enlarges it, and a small scene's stairs do not show.
-// The neighbourhood is the pixel's 2x2 quad, read through the fine derivatives rather
+// Each pixel is reprojected at the nearest depth around it, so a near object's
+// silhouette moves with the object rather than partly with the background behind it.
+// Most of the neighbourhood (8 of the 3x3) is read through the fine derivatives rather
 // than fetched: on llvmpipe every fetch costs about as much as the arithmetic of a whole
 // pixel. Only the pixels of the vehicle's screen box fetch its candidate. Without
 // FXAA it reads the HDR colour and does the tone map itself (tonemapped_by_temporal):

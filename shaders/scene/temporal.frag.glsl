@@ -20,7 +20,7 @@ uniform float u_exposure;
 uniform sampler2D u_current;  // this frame (texels): tone-mapped, or HDR with FROM_HDR
 uniform sampler2D u_history;  // the last resolved frame, bilinear
 uniform sampler2D u_depth;    // this frame's window depth
-uniform mat4 u_reproject;     // this frame's NDC -> the last frame's clip space, the world still
+uniform mat4 u_reproject;     // this frame's unjittered NDC -> the last frame's clip space, the world still
 uniform mat4 u_reproject_vehicle;  // the same for a point on the vehicle nearest the eye
 uniform float u_current_weight;  // 1: no history (the first frame, a resize)
 layout(location = 0) out vec4 o_colour;
