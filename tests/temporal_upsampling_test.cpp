@@ -278,8 +278,29 @@ double bar_for(const std::string& name) {
     return 0.9;
 }
 
+fs::path replays_dir() { return fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays"; }
+
+// A replay's level twice at `size`: native (medium at scale 1) and auto's path (medium,
+// drawn at `scale` and resolved with the frames before).
+struct NativeAndAuto {
+    NativeAndAuto(const game::ReplayHeader& h, StageOptions size, float scale)
+        : native(game::GameSession::open(h.level_id, 1, h.seed), size),
+          small(game::GameSession::open(h.level_id, 1, h.seed), size) {
+        native.renderer().set_quality(effects::Quality::Medium);
+        native.renderer().set_render_scale(1.0f);
+        small.renderer().set_quality(effects::Quality::Medium);
+        small.renderer().set_render_scale(scale);
+        small.renderer().set_temporal(true);
+    }
+    void step(const sim::TickInput& input) {
+        native.world().step(input);
+        small.world().step(input);
+    }
+    RenderStage native, small;
+};
+
 TEST_F(TemporalCheckpointTest, HalfScaleFramesAreWithinSsim09OfNative) {
-    const fs::path dir = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays";
+    const fs::path dir = replays_dir();
     std::vector<fs::path> replays;
     for (const fs::directory_entry& e : fs::directory_iterator(dir))
         if (e.path().extension() == ".replay") replays.push_back(e.path());
@@ -290,20 +311,13 @@ TEST_F(TemporalCheckpointTest, HalfScaleFramesAreWithinSsim09OfNative) {
         const game::Replay replay = game::read_replay(path);
         const game::ReplayHeader& h = replay.header;
         const game::CameraTrack cameras(h.camera_shots, h.tick_rate_hz);
-        const StageOptions size{.width = int(h.frame_width), .height = int(h.frame_height)};
-        RenderStage native(game::GameSession::open(h.level_id, 1, h.seed), size);
-        RenderStage small(game::GameSession::open(h.level_id, 1, h.seed), size);
-        native.renderer().set_quality(effects::Quality::Medium);
-        native.renderer().set_render_scale(1.0f);
-        small.renderer().set_quality(effects::Quality::Medium);
-        small.renderer().set_render_scale(0.5f);
-        small.renderer().set_temporal(true);
+        NativeAndAuto stages(h, {.width = int(h.frame_width), .height = int(h.frame_height)}, 0.5f);
+        RenderStage &native = stages.native, &small = stages.small;
         uint32_t tick = 0;
         for (uint32_t checkpoint : h.checkpoints) {
             if (checkpoint > replay.inputs.size()) continue;
             for (; tick < checkpoint; ++tick) {
-                native.world().step(replay.inputs[tick]);
-                small.world().step(replay.inputs[tick]);
+                stages.step(replay.inputs[tick]);
                 if (tick + kFramesBefore >= checkpoint) {
                     const uint32_t at = tick + 1;
                     small.draw(small.camera(cameras.view_at(at, small.world().get<sim::CameraRig>().view())),
@@ -334,22 +348,14 @@ TEST_F(TemporalCheckpointTest, HalfScaleFramesAreWithinSsim09OfNative) {
 // the edge tests above measure: this one guards the whole picture, and with
 // SPINDRIFT_TEMPORAL_PNG_DIR set writes both frames to look at).
 TEST_F(TemporalCheckpointTest, MovingEdgesAtTheFloor) {
-    const fs::path dir = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays";
-    const game::Replay replay = game::read_replay(dir / "harbour_drive.replay");
+    const game::Replay replay = game::read_replay(replays_dir() / "harbour_drive.replay");
     const game::ReplayHeader& h = replay.header;
     const game::CameraTrack cameras(h.camera_shots, h.tick_rate_hz);
-    const StageOptions size{.width = 1280, .height = 720};
-    RenderStage native(game::GameSession::open(h.level_id, 1, h.seed), size);
-    RenderStage small(game::GameSession::open(h.level_id, 1, h.seed), size);
-    native.renderer().set_quality(effects::Quality::Medium);
-    native.renderer().set_render_scale(1.0f);
-    small.renderer().set_quality(effects::Quality::Medium);
-    small.renderer().set_render_scale(0.35f);
-    small.renderer().set_temporal(true);
+    NativeAndAuto stages(h, {.width = 1280, .height = 720}, 0.35f);
+    RenderStage &native = stages.native, &small = stages.small;
     const char* out = std::getenv("SPINDRIFT_TEMPORAL_PNG_DIR");
     for (uint32_t tick = 0; tick < 442; ++tick) {
-        native.world().step(replay.inputs[tick]);
-        small.world().step(replay.inputs[tick]);
+        stages.step(replay.inputs[tick]);
         const uint32_t at = tick + 1;
         if (at < 350 || at % 3 != 0) continue;
         const sim::CameraView view = cameras.view_at(at, small.world().get<sim::CameraRig>().view());
