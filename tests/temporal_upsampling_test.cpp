@@ -2,11 +2,14 @@
 // upscale.frag.glsl): what auto draws small comes out looking like the native frame.
 // - A slanted high-contrast edge drawn small, jittered frame after frame, resolved and
 //   upscaled, runs straight: no stair taller than 2 output pixels, where the one frame
-//   enlarged has the small scene's own stairs (1/scale pixels).
+//   enlarged has the small scene's own stairs (1/scale pixels); moving (the view
+//   panning, or a near edge against a still background), none taller than 2.5 at 0.35.
 // - At every bundled replay's checkpoints, the frame drawn at scale 0.5 through the
 //   auto path (medium, jittered and resolved, after the frames of the ticks before it)
 //   is within SSIM 0.9 of the native medium frame of the same tick, but for the known
 //   misses listed below (the rain's windshield, the tank's liquid, the warehouse's siding).
+// - harbour_drive driven past the house at 0.35 and 1280x720, as auto draws it at its
+//   floor, is within SSIM 0.94 of native.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,7 +21,9 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 
 #include "HeadlessTest.h"
 #include "RenderStage.h"
@@ -27,6 +32,7 @@
 #include "effects/gl/Framebuffer.h"
 #include "effects/gl/Program.h"
 #include "effects/gl/Texture.h"
+#include "effects/scene/Camera.h"
 #include "effects/scene/TemporalPass.h"
 #include "game/capture/ImageFiles.h"
 #include "game/capture/Readback.h"
@@ -77,18 +83,18 @@ protected:
     static constexpr double kY0 = 30.0, kSlope = 0.13;
 
     // The small scene at `scale`, as a rasteriser draws it with the projection moved by
-    // `jitter` (scene pixels): each pixel all dark or all light, by its sample point.
-    static std::vector<uint8_t> aliased_edge(int w, int h, double scale, glm::vec2 jitter) {
-        std::vector<uint8_t> rgba;
+    // `jitter` (scene pixels): each pixel dark or light by its sample point (true:
+    // dark), rows bottom-up. `moved`: the edge moved by that many output pixels.
+    static std::vector<bool> aliased_edge(int w, int h, double scale, glm::vec2 jitter, glm::dvec2 moved) {
+        std::vector<bool> dark;
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
                 // The sample point in output pixels. Moving the picture by +jitter is
                 // sampling it at -jitter.
-                const double sx = (x + 0.5 - jitter.x) / scale, sy = (y + 0.5 - jitter.y) / scale;
-                const uint8_t v = sy > kY0 + kSlope * sx ? kLight : kDark;
-                rgba.insert(rgba.end(), {v, v, v, 255});
+                const double sx = (x + 0.5 - jitter.x) / scale - moved.x, sy = (y + 0.5 - jitter.y) / scale - moved.y;
+                dark.push_back(sy <= kY0 + kSlope * sx);
             }
-        return rgba;
+        return dark;
     }
 
     static Texture image(const char* name, int w, int h, const std::vector<uint8_t>* rgba) {
@@ -110,28 +116,60 @@ protected:
         glFinish();
     }
 
+    // How the edge moves: with the view (the whole picture pans by `velocity` scene
+    // pixels a frame; the reprojection is TemporalPass's, from a view that moves), or
+    // as a near object's edge against a far, still background (the dark side moves by
+    // `velocity` and is nearer: the reprojection moves a point by its depth, as a
+    // view moving sideways does; the light side's pixels read the history where they
+    // are).
+    enum class Motion { Pan, Parallax };
+    static constexpr float kNearDepth = 0.3f, kFarDepth = 0.9f;
+
     // The edge at `scale` through `frames` jittered frames, each resolved against the
-    // last (a still camera: the reprojection is the identity), then upscaled to the
-    // output; rows bottom-up, the red channel.
-    std::vector<int> upscaled_edge(double scale, int frames) {
+    // last, then upscaled to the output; rows bottom-up, the red channel.
+    std::vector<int> upscaled_edge(double scale, int frames, glm::dvec2 velocity = {0.0, 0.0},
+                                   Motion motion = Motion::Pan) {
         const int w = int(std::lround(kOutW * scale)), h = int(std::lround(kOutH * scale));
-        Texture depth = Texture::create_2d("test.depth", GL_DEPTH_COMPONENT32F, w, h);
-        const std::vector<float> half(size_t(w * h), 0.5f);
-        glTextureSubImage2D(depth.id(), 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, half.data());
         Texture history[2] = {image("test.history0", w, h, nullptr), image("test.history1", w, h, nullptr)};
         const Program resolve =
             Program::from_files("temporal", {"common/fullscreen.vert.glsl", "scene/temporal.frag.glsl"});
         int written = 0;
+        const glm::vec2 step_ndc = glm::vec2(2.0 * velocity / glm::dvec2(w, h));
+        // Pan: the view of frame f, the picture moved by f * velocity.
+        auto view_proj = [&](int f) {
+            return motion == Motion::Pan ? glm::translate(glm::mat4(1.0f), glm::vec3(float(f) * step_ndc, 0.0f))
+                                         : glm::mat4(1.0f);
+        };
+        // Parallax: from this frame's NDC to the last's, x' = x - step * (far - z) / (far - near).
+        glm::mat4 parallax(1.0f);
+        const float far_z = kFarDepth * 2.0f - 1.0f, near_z = kNearDepth * 2.0f - 1.0f;
+        parallax[2] = glm::vec4(step_ndc / (far_z - near_z), 1.0f, 0.0f);
+        parallax[3] = glm::vec4(-step_ndc * far_z / (far_z - near_z), 0.0f, 1.0f);
         for (int f = 0; f < frames; ++f) {
-            const std::vector<uint8_t> rgba = aliased_edge(w, h, scale, effects::temporal_jitter_px(uint64_t(f)));
+            const glm::vec2 jitter = effects::temporal_jitter_px(uint64_t(f));
+            effects::Camera camera;
+            camera.proj = camera.view_proj = view_proj(f);  // view: the identity
+            camera = effects::jittered(camera, 2.0f * jitter / glm::vec2(w, h));
+            const std::vector<bool> dark = aliased_edge(w, h, scale, jitter, double(f) * velocity / scale);
+            std::vector<uint8_t> rgba;
+            std::vector<float> window_depth;
+            for (const bool d : dark) {
+                const uint8_t v = d ? kDark : kLight;
+                rgba.insert(rgba.end(), {v, v, v, 255});
+                window_depth.push_back(motion == Motion::Parallax && !d ? kFarDepth : kNearDepth);
+            }
             Texture current = image("test.current", w, h, &rgba);
+            Texture depth = Texture::create_2d("test.depth", GL_DEPTH_COMPONENT32F, w, h);
+            glTextureSubImage2D(depth.id(), 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, window_depth.data());
             written = f % 2;
             resolve.use();
             resolve.set("u_current", 0);
             resolve.set("u_history", 1);
             resolve.set("u_depth", 2);
-            resolve.set("u_reproject", glm::mat4(1.0f));
-            resolve.set("u_reproject_vehicle", glm::mat4(1.0f));
+            const glm::mat4 reproject =
+                effects::history_reprojection(motion == Motion::Pan ? view_proj(f - 1) : parallax, camera);
+            resolve.set("u_reproject", reproject);
+            resolve.set("u_reproject_vehicle", reproject);
             resolve.set("u_current_weight", f == 0 ? 1.0f : 0.15f);
             current.bind(0);
             history[1 - written].bind(1);
@@ -153,22 +191,31 @@ protected:
         for (int y = 0; y < kOutH; ++y)
             for (int x = 0; x < kOutW; ++x)
                 red[size_t(y * kOutW + x)] = im.pixels[(size_t(kOutH - 1 - y) * kOutW + size_t(x)) * 4];
+        moved_ = double(frames - 1) * velocity / scale;
+        step_ = velocity.x / scale;
         return red;
     }
 
     // How far the edge, found in each column (the dark pixels' share of it, as a
     // height), strays from the straight line, at most, either side: a stair's height is
-    // twice that. Columns near the sides are left out (the clamp at the border).
-    static double worst_departure(const std::vector<int>& red) {
+    // twice that. Columns near the sides are left out (the clamp at the border), and so
+    // are those whose picture came into view in the last kSettle frames (they have no
+    // history yet).
+    static constexpr int kSettle = 12;
+    double worst_departure(const std::vector<int>& red) const {
         double worst = 0.0;
-        for (int x = 8; x < kOutW - 8; ++x) {
+        const double came = kSettle * step_;
+        for (int x = 8 + int(std::ceil(std::max(came, 0.0))); x < kOutW - 8 + int(std::floor(std::min(came, 0.0))); ++x) {
             double dark = 0.0;
             for (int y = 0; y < kOutH; ++y)
                 dark += std::clamp(double(kLight - red[size_t(y * kOutW + x)]) / double(kLight - kDark), 0.0, 1.0);
-            worst = std::max(worst, std::abs(dark - (kY0 + kSlope * (x + 0.5))));
+            worst = std::max(worst, std::abs(dark - (kY0 + moved_.y + kSlope * (x + 0.5 - moved_.x))));
         }
         return worst;
     }
+
+    glm::dvec2 moved_{0.0};  // the last upscaled_edge's picture's move, in output pixels
+    double step_ = 0.0;      // and its move a frame across, in output pixels
 };
 
 TEST_F(TemporalEdgeTest, ASlantedEdgeHasNoStairTallerThanTwoOutputPixels) {
@@ -182,6 +229,30 @@ TEST_F(TemporalEdgeTest, ASlantedEdgeHasNoStairTallerThanTwoOutputPixels) {
     }
 }
 
+// The same edge while the view pans (a car driving past a house's roof): the history is
+// resampled where the edge was, a fraction of a texel off its centres each frame, and the
+// clamp to this frame's neighbourhood must not cut the edge back to this frame's stairs.
+// The same edge while it moves, at speeds a driven car gives the house's roof and the
+// lamp post at 20 fps (a fraction of a scene pixel to a few a frame): the history is
+// read a fraction of a texel off its centres, and the clamp to this frame's
+// neighbourhood must not cut the edge back to this frame's stairs. At 0.35 a stair of
+// the one frame is 2.86 output pixels; the resolved edge must stay under 2.5 there
+// (under 2 at 0.5). Before the reprojection took the nearest point around a pixel,
+// the near edge against a still background had stairs of up to 7.5 output pixels.
+TEST_F(TemporalEdgeTest, AMovingSlantedEdgeHasNoSceneSizedStairs) {
+    for (const Motion motion : {Motion::Pan, Motion::Parallax})
+        for (double scale : {0.35, 0.5})
+            for (const glm::dvec2 velocity : {glm::dvec2(1.0, 0.0), glm::dvec2(0.5, 0.0), glm::dvec2(0.0, 0.5),
+                                              glm::dvec2(0.37, 0.11), glm::dvec2(1.3, -0.45), glm::dvec2(-2.6, 0.3)}) {
+                const double stair = 2.0 * worst_departure(upscaled_edge(scale, 16, velocity, motion));
+                const char* how = motion == Motion::Pan ? "panning" : "against a still background";
+                std::printf("scale %.2f, %s at %.2f, %.2f scene px a frame: stairs %.2f output px\n", scale, how,
+                            velocity.x, velocity.y, stair);
+                EXPECT_LE(stair, scale < 0.4 ? 2.5 : 2.0)
+                    << "scale " << scale << ", " << how << " at " << velocity.x << ", " << velocity.y;
+            }
+}
+
 // The auto path against native at the replays' checkpoints.
 class TemporalCheckpointTest : public HeadlessTest {};
 
@@ -190,26 +261,46 @@ class TemporalCheckpointTest : public HeadlessTest {};
 // scene's pixels: the windshield's drops in the rain (native shows each drop's bright
 // rim; at 0.5 they are two or three pixels across), the warehouse's corrugated siding
 // (dust 640) and the tank's liquid, whose screen-space smoothing follows the scene's
-// pixels (tank 798 to 1160). A resolve at the scene's size cannot
-// bring back what its pixels never held; a history at the output's size would, at
-// about three more fills a frame on llvmpipe (docs/PERFORMANCE.md).
+// pixels (tank 1100 and 1160; its other driver-view checkpoints passed 0.9 once the
+// reprojection took the nearest point around each pixel). A resolve at the scene's
+// size cannot bring back what its pixels never held; a history at the output's size
+// would, at about three more fills a frame on llvmpipe (docs/PERFORMANCE.md).
 double bar_for(const std::string& name) {
     static const std::vector<std::pair<std::string, double>> misses{
-        // harbour_boat 682 and 703: the crown's rim beads, the drops' highlights and the foam's
-        // lace are a pixel or two across at 640x360 (0.883 and 0.899 when they came in).
-        {"harbour_boat_682", 0.86},  {"harbour_boat_703", 0.87},
-        {"harbour_dust_640", 0.84},  {"harbour_rain_240", 0.83},  {"harbour_rain_260", 0.78},
-        {"harbour_rain_300", 0.82},  {"harbour_rain_450", 0.82},  {"harbour_rain_700", 0.77},
-        {"harbour_rain_960", 0.78},  {"harbour_rain_1080", 0.85}, {"harbour_rain_1690", 0.63},
-        {"harbour_tank_798", 0.86},  {"harbour_tank_810", 0.86},  {"harbour_tank_1025", 0.86},
-        {"harbour_tank_1035", 0.86}, {"harbour_tank_1100", 0.83}, {"harbour_tank_1160", 0.84}};
+        // harbour_boat 682: the crown's rim beads, the drops' highlights and the foam's
+        // lace are a pixel or two across at 640x360 (0.883 when it came in, 0.874 now).
+        {"harbour_boat_682", 0.86},  {"harbour_dust_640", 0.86},  {"harbour_rain_240", 0.87},
+        {"harbour_rain_260", 0.82},  {"harbour_rain_300", 0.85},  {"harbour_rain_450", 0.86},
+        {"harbour_rain_700", 0.83},  {"harbour_rain_960", 0.83},  {"harbour_rain_1080", 0.85},
+        {"harbour_rain_1690", 0.69}, {"harbour_tank_1100", 0.87}, {"harbour_tank_1160", 0.87}};
     for (const auto& [miss, bar] : misses)
         if (miss == name) return bar;
     return 0.9;
 }
 
+fs::path replays_dir() { return fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays"; }
+
+// A replay's level twice at `size`: native (medium at scale 1) and auto's path (medium,
+// drawn at `scale` and resolved with the frames before).
+struct NativeAndAuto {
+    NativeAndAuto(const game::ReplayHeader& h, StageOptions size, float scale)
+        : native(game::GameSession::open(h.level_id, 1, h.seed), size),
+          small(game::GameSession::open(h.level_id, 1, h.seed), size) {
+        native.renderer().set_quality(effects::Quality::Medium);
+        native.renderer().set_render_scale(1.0f);
+        small.renderer().set_quality(effects::Quality::Medium);
+        small.renderer().set_render_scale(scale);
+        small.renderer().set_temporal(true);
+    }
+    void step(const sim::TickInput& input) {
+        native.world().step(input);
+        small.world().step(input);
+    }
+    RenderStage native, small;
+};
+
 TEST_F(TemporalCheckpointTest, HalfScaleFramesAreWithinSsim09OfNative) {
-    const fs::path dir = fs::path(SPINDRIFT_TEST_DATA).parent_path().parent_path() / "replays";
+    const fs::path dir = replays_dir();
     std::vector<fs::path> replays;
     for (const fs::directory_entry& e : fs::directory_iterator(dir))
         if (e.path().extension() == ".replay") replays.push_back(e.path());
@@ -220,20 +311,13 @@ TEST_F(TemporalCheckpointTest, HalfScaleFramesAreWithinSsim09OfNative) {
         const game::Replay replay = game::read_replay(path);
         const game::ReplayHeader& h = replay.header;
         const game::CameraTrack cameras(h.camera_shots, h.tick_rate_hz);
-        const StageOptions size{.width = int(h.frame_width), .height = int(h.frame_height)};
-        RenderStage native(game::GameSession::open(h.level_id, 1, h.seed), size);
-        RenderStage small(game::GameSession::open(h.level_id, 1, h.seed), size);
-        native.renderer().set_quality(effects::Quality::Medium);
-        native.renderer().set_render_scale(1.0f);
-        small.renderer().set_quality(effects::Quality::Medium);
-        small.renderer().set_render_scale(0.5f);
-        small.renderer().set_temporal(true);
+        NativeAndAuto stages(h, {.width = int(h.frame_width), .height = int(h.frame_height)}, 0.5f);
+        RenderStage &native = stages.native, &small = stages.small;
         uint32_t tick = 0;
         for (uint32_t checkpoint : h.checkpoints) {
             if (checkpoint > replay.inputs.size()) continue;
             for (; tick < checkpoint; ++tick) {
-                native.world().step(replay.inputs[tick]);
-                small.world().step(replay.inputs[tick]);
+                stages.step(replay.inputs[tick]);
                 if (tick + kFramesBefore >= checkpoint) {
                     const uint32_t at = tick + 1;
                     small.draw(small.camera(cameras.view_at(at, small.world().get<sim::CameraRig>().view())),
@@ -253,6 +337,40 @@ TEST_F(TemporalCheckpointTest, HalfScaleFramesAreWithinSsim09OfNative) {
                 game::write_png(fs::path(out) / (name + "_auto.png"), resolved);
             }
             EXPECT_GE(s, bar) << name;
+        }
+    }
+}
+
+// harbour_drive while the car drives past the house and the lamp post (ticks 350-441),
+// drawn as the game draws auto at its floor: 1280x720 at scale 0.35, a frame every
+// three ticks (about the 20 fps auto runs at there), against the native medium frame
+// at ticks 390 and 420 (0.954 and 0.957; SSIM hardly sees a moving edge's stairs, which
+// the edge tests above measure: this one guards the whole picture, and with
+// SPINDRIFT_TEMPORAL_PNG_DIR set writes both frames to look at).
+TEST_F(TemporalCheckpointTest, MovingEdgesAtTheFloor) {
+    const game::Replay replay = game::read_replay(replays_dir() / "harbour_drive.replay");
+    const game::ReplayHeader& h = replay.header;
+    const game::CameraTrack cameras(h.camera_shots, h.tick_rate_hz);
+    NativeAndAuto stages(h, {.width = 1280, .height = 720}, 0.35f);
+    RenderStage &native = stages.native, &small = stages.small;
+    const char* out = std::getenv("SPINDRIFT_TEMPORAL_PNG_DIR");
+    for (uint32_t tick = 0; tick < 442; ++tick) {
+        stages.step(replay.inputs[tick]);
+        const uint32_t at = tick + 1;
+        if (at < 350 || at % 3 != 0) continue;
+        const sim::CameraView view = cameras.view_at(at, small.world().get<sim::CameraRig>().view());
+        small.draw(small.camera(view), {.time_s = double(at) * sim::kTickSeconds});
+        if (at % 30 != 0 || at < 390) continue;
+        const game::ImageRGBA8 full = native.render(cameras.view_at(at, native.world().get<sim::CameraRig>().view()),
+                                                    {.time_s = double(at) * sim::kTickSeconds});
+        const game::ImageRGBA8 resolved = small.ldr();
+        const std::string name = "moving_" + std::to_string(at);
+        const double s = ssim(full, resolved);
+        std::printf("%s: SSIM %.4f\n", name.c_str(), s);
+        EXPECT_GE(s, 0.94) << name;
+        if (out) {
+            game::write_png(fs::path(out) / (name + "_native.png"), full);
+            game::write_png(fs::path(out) / (name + "_auto.png"), resolved);
         }
     }
 }

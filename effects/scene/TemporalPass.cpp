@@ -39,6 +39,14 @@ glm::vec2 temporal_jitter_px(uint64_t frame) {
     return {radical_inverse(i, 2) - 0.5f, radical_inverse(i, 3) - 0.5f};
 }
 
+glm::mat4 unjittered_view_proj(const Camera& camera) {
+    return glm::translate(glm::mat4(1.0f), glm::vec3(-camera.jitter_ndc, 0.0f)) * camera.view_proj;
+}
+
+glm::mat4 history_reprojection(const glm::mat4& last_view_proj, const Camera& camera) {
+    return last_view_proj * glm::inverse(unjittered_view_proj(camera));
+}
+
 TemporalPass::TemporalPass() {
     for (const bool from_hdr : {false, true})
         for (const bool vehicle : {false, true}) {
@@ -65,8 +73,7 @@ void TemporalPass::render(const FrameContext& frame) {
     // A resize made new (empty) images: the first frame after it starts afresh.
     const bool history = has_history_ && history_generation_ == t.generation();
     const Camera& camera = frame.camera;
-    const glm::mat4 unjittered =
-        glm::translate(glm::mat4(1.0f), glm::vec3(-camera.jitter_ndc, 0.0f)) * camera.view_proj;
+    const glm::mat4 unjittered = unjittered_view_proj(camera);
     // The vehicle nearest the eye (the one the camera rides or follows) moves with its
     // pose, not with the world: its pixels' last place is through its last pose.
     const bool car_nearer = glm::distance(frame.poses.car.position, camera.eye) <=
@@ -100,13 +107,12 @@ void TemporalPass::render(const FrameContext& frame) {
         program.set("u_history", 1);
         program.set("u_depth", 2);
         if (from_hdr) program.set("u_exposure", frame.resources.exposure);
-        // From this frame's window position and depth (drawn jittered) to where that
-        // point was in the last frame's unjittered view: as a still part of the world,
-        // or as a point on the vehicle; what else moves (thrown objects, water) is left
-        // to the clamp.
-        program.set("u_reproject", last_view_proj_ * camera.inv_view_proj);
+        // Where the pixel's point was in the last frame's view: as a still part of the
+        // world, or as a point on the vehicle; what else moves (thrown objects, water)
+        // is left to the clamp.
+        program.set("u_reproject", history_reprojection(last_view_proj_, camera));
         if (with_vehicle)
-            program.set("u_reproject_vehicle", last_view_proj_ * last_vehicle * glm::inverse(vehicle) * camera.inv_view_proj);
+            program.set("u_reproject_vehicle", history_reprojection(last_view_proj_ * last_vehicle * glm::inverse(vehicle), camera));
         program.set("u_current_weight", history ? current_weight_ : 1.0f);
         auto draw_in = [](glm::ivec4 r) {
             if (empty(r)) return;

@@ -6,6 +6,7 @@
 
 #include "effects/Quality.h"
 #include "effects/gl/Program.h"
+#include "effects/scene/Camera.h"
 #include "effects/scene/Pass.h"
 
 namespace effects {
@@ -22,7 +23,9 @@ namespace effects {
 // nearer this frame's colour is taken. Over a few frames an edge's pixels take its
 // coverage instead of all-or-nothing: the scene is anti-aliased before the upscale
 // enlarges it, and a small scene's stairs do not show.
-// The neighbourhood is the pixel's 2x2 quad, read through the fine derivatives rather
+// Each pixel is reprojected at the nearest depth around it, so a near object's
+// silhouette moves with the object rather than partly with the background behind it.
+// Most of the neighbourhood (8 of the 3x3) is read through the fine derivatives rather
 // than fetched: on llvmpipe every fetch costs about as much as the arithmetic of a whole
 // pixel. Only the pixels of the vehicle's screen box fetch its candidate. Without
 // FXAA it reads the HDR colour and does the tone map itself (tonemapped_by_temporal):
@@ -51,6 +54,17 @@ private:
 // sequence's first eight points, again and again, so that every eight frames sample a
 // pixel evenly.
 glm::vec2 temporal_jitter_px(uint64_t frame);
+
+// `camera`'s view-projection without its jitter.
+glm::mat4 unjittered_view_proj(const Camera& camera);
+
+// From this frame's window position and depth to the last frame's clip space (its view
+// `last_view_proj`, unjittered), the world taken as still. The position is the pixel's
+// centre without this frame's jitter: the history holds the picture unjittered, so a
+// still view reads it at its texels' centres (no resampling, no blur), and the jittered
+// sample this frame adds lands a sub-pixel off the centre, which is what averages an
+// edge's coverage over the frames.
+glm::mat4 history_reprojection(const glm::mat4& last_view_proj, const Camera& camera);
 
 // Whether TemporalPass tone maps the frame (and TonemapPass draws nothing): temporal
 // upsampling on, FXAA off (FXAA reads the tone-mapped image).
