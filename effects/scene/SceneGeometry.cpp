@@ -79,7 +79,6 @@ SceneGeometry::SceneGeometry(const SceneDesc& desc, const sim::Terrain& terrain)
       batches_(desc) {
     for (const Model& m : desc.models) models_.push_back(std::make_unique<GpuModel>(m));
     std::tie(props_min_, props_max_) = bounds(prop_boxes(desc));
-
 }
 
 int SceneGeometry::ground_road_count() const { return std::min<int>(int(level_.roads.size()), kMaxRoads); }
@@ -123,15 +122,12 @@ void SceneGeometry::draw(const gl::Program& p, const gl::Program& ground, const 
     material(glm::vec4(1.0f));
     batches_.draw(p, depth_only, view, select, eye);
 
+    if (open_sky_ground) place(*open_sky_ground, glm::mat4(1.0f), depth_only);
+    ground.use();
+    place(ground, glm::mat4(1.0f), depth_only);
     // A level stretch of ground shades nothing: a ray rising from anything above the
     // ground towards the sun can only meet the ground where it rises. Left out of
     // the shadow map, it saves the raster of most of the map and cannot self-shadow.
-    if (open_sky_ground) {
-        open_sky_ground->use();
-        place(*open_sky_ground, glm::mat4(1.0f), depth_only);
-    }
-    ground.use();
-    place(ground, glm::mat4(1.0f), depth_only);
     terrain_.draw(ground, depth_only, view, depth_only, select, open_sky_ground);
 }
 
