@@ -4,8 +4,8 @@
 // vertical error, seen from the eye at its nearest point, stays under a fraction of a
 // scene pixel. Every pass of a frame draws the same plan, so the sun's shadow map holds
 // the very surface the frame shades (no acne where a coarse tile sinks under a fine one).
-#include <cstdint>
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <vector>
 

@@ -146,17 +146,19 @@ TerrainMesh make_terrain_mesh(const sim::Terrain& terrain, float spacing_m) {
 void split_open_sky(TerrainMesh& mesh, const OpenSky& open) {
     std::vector<uint32_t> indices;
     indices.reserve(mesh.indices.size());
+    std::vector<OpenSky> near;  // per tile, the props that can matter to it: once, for every level
+    near.reserve(mesh.tiles.size());
+    for (const TerrainMesh::Tile& tile : mesh.tiles) near.push_back(open.near(tile.lo, tile.hi));
     for (int l = 0; l < TerrainMesh::kLevels; ++l) {
         std::vector<std::vector<uint32_t>> open_tris(mesh.tiles.size());
         for (size_t t = 0; t < mesh.tiles.size(); ++t) {
             TerrainMesh::Tile& tile = mesh.tiles[t];
-            const OpenSky near = open.near(tile.lo, tile.hi);
             const uint32_t first = uint32_t(indices.size());
             for (const TerrainMesh::IndexRange& r : {tile.level[size_t(l)], tile.open_level[size_t(l)]})
                 for (uint32_t i = r.first; i < r.first + r.count; i += 3) {
                     const glm::vec3 a = mesh.vertices[mesh.indices[i]].position, b = mesh.vertices[mesh.indices[i + 1]].position,
                                     c = mesh.vertices[mesh.indices[i + 2]].position;
-                    const bool is_open = near.open(glm::min(glm::min(a, b), c), glm::max(glm::max(a, b), c));
+                    const bool is_open = near[t].open(glm::min(glm::min(a, b), c), glm::max(glm::max(a, b), c));
                     std::vector<uint32_t>& to = is_open ? open_tris[t] : indices;
                     to.insert(to.end(), mesh.indices.begin() + i, mesh.indices.begin() + i + 3);
                 }
