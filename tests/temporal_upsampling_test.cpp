@@ -4,10 +4,10 @@
 //   upscaled, runs straight: no stair taller than 2 output pixels, where the one frame
 //   enlarged has the small scene's own stairs (1/scale pixels); moving (the view
 //   panning, or a near edge against a still background), none taller than 2.5 at 0.35.
-// - At every bundled replay's checkpoints, the frame drawn at scale 0.5 through the
-//   auto path (medium, jittered and resolved, after the frames of the ticks before it)
-//   is within SSIM 0.9 of the native medium frame of the same tick, but for the known
-//   misses listed below (the rain's windshield, the tank's liquid, the warehouse's siding).
+// - At every bundled replay's checkpoints, the frame drawn at scale 0.5 of 1280x720
+//   (the game's window) through the auto path (medium, jittered and resolved, after the
+//   frames of the ticks before it) is within SSIM 0.9 of the native medium frame of the
+//   same tick, but for the known miss listed below (the rain's windshield at its heaviest).
 // - harbour_drive driven past the house at 0.35 and 1280x720, as auto draws it at its
 //   floor, is within SSIM 0.94 of native.
 #include <gtest/gtest.h>
@@ -257,22 +257,16 @@ TEST_F(TemporalEdgeTest, AMovingSlantedEdgeHasNoSceneSizedStairs) {
 class TemporalCheckpointTest : public HeadlessTest {};
 
 // Checkpoints that miss the 0.9, each held to what it measured less 0.02 (so a change
-// that makes them worse still fails). What they show is finer than the half-size
-// scene's pixels: the windshield's drops in the rain (native shows each drop's bright
-// rim; at 0.5 they are two or three pixels across), the warehouse's corrugated siding
-// (dust 640) and the tank's liquid, whose screen-space smoothing follows the scene's
-// pixels (tank 1100 and 1160; its other driver-view checkpoints passed 0.9 once the
-// reprojection took the nearest point around each pixel). A resolve at the scene's
-// size cannot bring back what its pixels never held; a history at the output's size
-// would, at about three more fills a frame on llvmpipe (docs/PERFORMANCE.md).
+// that makes them worse still fails). harbour_rain 1690, the glass crowded with drops
+// (0.788): auto's drop map follows the scene's scale (docs/PERFORMANCE.md), 256 texels
+// wide here against native medium's 512, and the drops it makes are not the same
+// shapes; with native's map at this scale it reads 0.877, for 1.7 more fills a frame at
+// auto's floor. At the replays' own 640x360, scale 0.5 is a 320x180 scene, smaller
+// than auto ever draws for a 1280x720 window (its floor is 448x252): there the drops,
+// the siding and the tank's liquid fall below the scene's pixels and 12 checkpoints
+// read 0.69 to 0.899 (docs/BENCHMARKS.md).
 double bar_for(const std::string& name) {
-    static const std::vector<std::pair<std::string, double>> misses{
-        // harbour_boat 682: the crown's rim beads, the drops' highlights and the foam's
-        // lace are a pixel or two across at 640x360 (0.883 when it came in, 0.874 now).
-        {"harbour_boat_682", 0.86},  {"harbour_dust_640", 0.86},  {"harbour_rain_240", 0.87},
-        {"harbour_rain_260", 0.82},  {"harbour_rain_300", 0.85},  {"harbour_rain_450", 0.86},
-        {"harbour_rain_700", 0.83},  {"harbour_rain_960", 0.83},  {"harbour_rain_1080", 0.85},
-        {"harbour_rain_1690", 0.69}, {"harbour_tank_1100", 0.87}, {"harbour_tank_1160", 0.87}};
+    static const std::vector<std::pair<std::string, double>> misses{{"harbour_rain_1690", 0.76}};
     for (const auto& [miss, bar] : misses)
         if (miss == name) return bar;
     return 0.9;
@@ -311,7 +305,8 @@ TEST_F(TemporalCheckpointTest, HalfScaleFramesAreWithinSsim09OfNative) {
         const game::Replay replay = game::read_replay(path);
         const game::ReplayHeader& h = replay.header;
         const game::CameraTrack cameras(h.camera_shots, h.tick_rate_hz);
-        NativeAndAuto stages(h, {.width = int(h.frame_width), .height = int(h.frame_height)}, 0.5f);
+        // The window's size, which the frame targets are set at, not the replay's frame size.
+        NativeAndAuto stages(h, {.width = 1280, .height = 720}, 0.5f);
         RenderStage &native = stages.native, &small = stages.small;
         uint32_t tick = 0;
         for (uint32_t checkpoint : h.checkpoints) {

@@ -22,6 +22,7 @@ uniform float u_aspect;
 uniform float u_refraction;    // screen heights the lookup moves per unit of tilt...
 uniform float u_reach;         // ...but at most this many of the drop's radii
 uniform float u_blur_bias;     // mips: the eye is focused on the road, not the glass
+uniform float u_scene_lod;     // log2 of the scene's pixels per output pixel: the blurs are sized in output pixels
 uniform float u_glint;         // the sun's highlight, times its radiance
 uniform float u_film;          // the wet streaks' strength
 // Two blades, always: a missing one has an empty span. (A loop to a uniform count
@@ -86,11 +87,13 @@ void main() {
     float reach = min(u_refraction, u_reach * radius_px * u_inv_viewport.y);
     vec2 shift = dir_len2 > 0.0 ? -dir_px * inversesqrt(dir_len2) * sqrt(t2) * reach * vec2(1.0 / u_aspect, 1.0) : vec2(0.0);
     vec2 look = gl_FragCoord.xy * u_inv_viewport + shift;
-    // The mip for the image's own shrinking (the lookup's footprint), plus the focus
-    // blur; the film alone blurs by two mips.
+    // The mip for the image's own shrinking (the lookup's footprint, in the scene's
+    // pixels), plus the focus blur; the film alone blurs by two mips. The blurs are the
+    // eye's, a size on the screen: drawn smaller than the output (auto), they are as
+    // many fewer of the scene's mips.
     vec2 lx = dFdx(look) / u_inv_viewport, ly = dFdy(look) / u_inv_viewport;
-    float lod = 0.5 * log2(max(max(dot(lx, lx), dot(ly, ly)), 1.0)) + u_blur_bias;
-    lod = max(lod, 2.0 * (1.0 - cover));
+    float lod = 0.5 * log2(max(max(dot(lx, lx), dot(ly, ly)), 1.0)) + u_blur_bias + u_scene_lod;
+    lod = max(lod, 2.0 * (1.0 - cover) + u_scene_lod);
     if (cover <= 0.0 && film <= 0.004 && blade <= 0.0) discard;
 
     vec3 behind = textureLod(u_behind, look, lod).rgb;
