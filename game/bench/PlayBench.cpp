@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <string_view>
 
 #include "game/DataPaths.h"
 #include "game/bench/BenchSupport.h"
@@ -18,6 +19,34 @@ namespace game {
 namespace fs = std::filesystem;
 
 namespace {
+
+double pass_mean_ms(const TimedemoRun& run, std::string_view name) {
+    for (const auto& [pass, ms] : run.pass_ms)
+        if (pass == name) return ms;
+    return 0.0;
+}
+
+// The opaque pass paid for pixels: its mean at scale 0.5 over its mean at scale 1, the
+// replay played twice on auto's path with the scale held (1280x720), in milliseconds of
+// the same run, so the host's speed drops out.
+void bench_opaque_half_scale(BenchReport& report, const Replay& replay, const fs::path& path) {
+    double ms[2] = {0.0, 0.0};
+    size_t frames[2] = {0, 0};
+    const float scales[2] = {0.5f, 1.0f};
+    const std::string load_before = load_average();
+    for (int i = 0; i < 2; ++i) {
+        GameSession session = GameSession::open(replay.header.level_id, 1, replay.header.seed);
+        OffscreenScreen screen(1280, 720);
+        const TimedemoRun run =
+            run_timedemo(replay, path.filename().string(), session, screen, QualityChoice::Auto, scales[i]);
+        ms[i] = pass_mean_ms(run, "opaque");
+        frames[i] = run.frames.size();
+    }
+    report.add({"play", path.stem().string() + " auto: opaque pass at scale 0.5 / at scale 1", ms[0] / std::max(ms[1], 1e-6),
+                "x", kOpaqueHalfScaleShare, false,
+                fmt("%.2f ms over %zu frames / %.2f ms over %zu frames, 1280x720, load %s-%s", ms[0], frames[0], ms[1],
+                    frames[1], load_before.c_str(), load_average().c_str())});
+}
 
 std::vector<fs::path> bundled_replays(bool quick) {
     const fs::path dir = data_dir() / "replays";
@@ -80,6 +109,8 @@ void bench_play(BenchReport& report, bool quick) {
                 report.add({"play", label + ": upscale + HUD at the output's size in fills", output_ms / fill, "fills",
                             kAutoOutputFills});
             }
+        std::cerr << "bench: play " << name << " auto, the opaque pass at scale 0.5 and 1\n";
+        bench_opaque_half_scale(report, replay, path);
     }
 }
 

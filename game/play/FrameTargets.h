@@ -10,5 +10,6 @@ inline constexpr double kAutoP95Fills = 22.0;     // auto's 95th percentile fram
 inline constexpr double kAutoOutputFills = 3.0;   // what auto draws at the output's size (upscale, UI)
 inline constexpr double kAutoMinMeanScale = 0.5;  // auto's time-weighted render scale, at least
 inline constexpr double kHighMeanFills = 40.0;    // high's (native) mean frame
+inline constexpr double kOpaqueHalfScaleShare = 0.4;  // the opaque pass at scale 0.5, of its cost at 1
 
 }  // namespace game
