@@ -95,7 +95,7 @@ void RainPass::draw(const FrameContext& frame, const RainView& view) {
     shade_.set("u_refraction", look_.refraction);
     shade_.set("u_reach", look_.reach);
     shade_.set("u_blur_bias", look_.blur_bias);
-    shade_.set("u_scene_lod", frame.output.height > 0 ? std::log2(float(t.height()) / float(frame.output.height)) : 0.0f);
+    shade_.set("u_scene_lod", std::log2(std::min(scene_scale, 1.0f)));
     shade_.set("u_glint", look_.glint);
     shade_.set("u_film", view.film.empty() ? 0.0f : look_.film);
     shade_.set("u_film_scale", view.film_cell_m > 0.0f ? glm::vec2(1.0f / (float(film_cols_) * view.film_cell_m),

@@ -103,9 +103,7 @@ void bench_play(BenchReport& report, bool quick) {
                             0.35, true});
                 // What is drawn at the output's size: the upscale (or the copy of the
                 // resolved frame) and the UI.
-                double output_ms = 0.0;
-                for (const auto& [pass, ms] : run.pass_ms)
-                    if (pass == "upscale" || pass == "hud") output_ms += ms;
+                const double output_ms = pass_mean_ms(run, "upscale") + pass_mean_ms(run, "hud");
                 report.add({"play", label + ": upscale + HUD at the output's size in fills", output_ms / fill, "fills",
                             kAutoOutputFills});
             }
