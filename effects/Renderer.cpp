@@ -56,7 +56,7 @@ FrameContext Renderer::prepare(const sim::World& world, RenderOutput output, con
     size_scene(output.width, output.height);
     camera_ = request.camera ? *request.camera : make_camera(poses.camera, float(output.width) / float(output.height));
     if (resources_.quality.temporal) {
-        const glm::vec2 px = temporal_jitter_px(temporal_frame_++);
+        const glm::vec2 px = temporal_jitter_px(temporal_frame_++, scene_scale(targets_, output));
         camera_ = jittered(camera_, 2.0f * px / glm::vec2(targets_.width(), targets_.height()));
     }
     // The ground's detail for this frame's eye and scene pixels, for every pass to draw.

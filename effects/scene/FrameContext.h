@@ -26,6 +26,11 @@ struct RenderOutput {
     int width = 0, height = 0;
 };
 
+// The scene's pixels per output pixel across (below 1 on auto, or a lower preset).
+inline float scene_scale(const SceneTargets& targets, const RenderOutput& output) {
+    return float(targets.width()) / float(output.width > 0 ? output.width : 1);
+}
+
 // One frame: the world to draw (read only), from where, into what. Passes write only
 // the lighting's maps and the targets; the pass table declares who writes which.
 struct FrameContext {

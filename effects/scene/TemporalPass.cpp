@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -34,9 +35,18 @@ std::array<glm::ivec4, 4> rects_around(glm::ivec4 hole, int width, int height) {
 
 }  // namespace
 
-glm::vec2 temporal_jitter_px(uint64_t frame) {
+TemporalBlend temporal_blend(float scene_scale) {
+    constexpr float kSharpScale = 0.5f, kFloorScale = 0.35f;
+    constexpr TemporalBlend kSharp{.jitter_spread = 0.5f, .current_weight = 0.3f};
+    constexpr TemporalBlend kSmooth{.jitter_spread = 1.0f, .current_weight = 0.15f};
+    const float t = std::clamp((kSharpScale - scene_scale) / (kSharpScale - kFloorScale), 0.0f, 1.0f);
+    return {.jitter_spread = kSharp.jitter_spread + t * (kSmooth.jitter_spread - kSharp.jitter_spread),
+            .current_weight = kSharp.current_weight + t * (kSmooth.current_weight - kSharp.current_weight)};
+}
+
+glm::vec2 temporal_jitter_px(uint64_t frame, float scene_scale) {
     const uint64_t i = frame % 8 + 1;  // Halton's point 0 is the pixel's corner
-    return {radical_inverse(i, 2) - 0.5f, radical_inverse(i, 3) - 0.5f};
+    return glm::vec2(radical_inverse(i, 2) - 0.5f, radical_inverse(i, 3) - 0.5f) * temporal_blend(scene_scale).jitter_spread;
 }
 
 glm::mat4 unjittered_view_proj(const Camera& camera) {
@@ -59,10 +69,6 @@ TemporalPass::TemporalPass() {
         }
 }
 
-void TemporalPass::register_params(ParamRegistry& params) {
-    params.add("temporal", "this frame's weight", &current_weight_, 0.05f, 1.0f);
-}
-
 void TemporalPass::render(const FrameContext& frame) {
     if (!frame.resources.quality.temporal) {
         has_history_ = false;
@@ -73,6 +79,7 @@ void TemporalPass::render(const FrameContext& frame) {
     // A resize made new (empty) images: the first frame after it starts afresh.
     const bool history = has_history_ && history_generation_ == t.generation();
     const Camera& camera = frame.camera;
+    const TemporalBlend blend = temporal_blend(scene_scale(t, frame.output));
     const glm::mat4 unjittered = unjittered_view_proj(camera);
     // The vehicle nearest the eye (the one the camera rides or follows) moves with its
     // pose, not with the world: its pixels' last place is through its last pose.
@@ -113,7 +120,7 @@ void TemporalPass::render(const FrameContext& frame) {
         program.set("u_reproject", history_reprojection(last_view_proj_, camera));
         if (with_vehicle)
             program.set("u_reproject_vehicle", history_reprojection(last_view_proj_ * last_vehicle * glm::inverse(vehicle), camera));
-        program.set("u_current_weight", history ? current_weight_ : 1.0f);
+        program.set("u_current_weight", history ? blend.current_weight : 1.0f);
         auto draw_in = [](glm::ivec4 r) {
             if (empty(r)) return;
             glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
