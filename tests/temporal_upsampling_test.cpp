@@ -7,7 +7,7 @@
 // - At every bundled replay's checkpoints, the frame drawn at scale 0.5 of 1280x720
 //   (the game's window) through the auto path (medium, jittered and resolved, after the
 //   frames of the ticks before it) is within SSIM 0.9 of the native medium frame of the
-//   same tick, but for the known miss listed below (the rain's windshield at its heaviest).
+//   same tick.
 // - harbour_drive driven past the house at 0.35 and 1280x720, as auto draws it at its
 //   floor, is within SSIM 0.94 of native.
 #include <gtest/gtest.h>

@@ -5,6 +5,7 @@
 #include <glm/matrix.hpp>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -40,8 +41,8 @@ TemporalBlend temporal_blend(float scene_scale) {
     constexpr TemporalBlend kSharp{.jitter_spread = 0.5f, .current_weight = 0.3f};
     constexpr TemporalBlend kSmooth{.jitter_spread = 1.0f, .current_weight = 0.15f};
     const float t = std::clamp((kSharpScale - scene_scale) / (kSharpScale - kFloorScale), 0.0f, 1.0f);
-    return {.jitter_spread = kSharp.jitter_spread + t * (kSmooth.jitter_spread - kSharp.jitter_spread),
-            .current_weight = kSharp.current_weight + t * (kSmooth.current_weight - kSharp.current_weight)};
+    return {.jitter_spread = std::lerp(kSharp.jitter_spread, kSmooth.jitter_spread, t),
+            .current_weight = std::lerp(kSharp.current_weight, kSmooth.current_weight, t)};
 }
 
 glm::vec2 temporal_jitter_px(uint64_t frame, float scene_scale) {
